@@ -1,0 +1,28 @@
+#pragma once
+// Writes a file so that a killed run never leaves a half-written file that looks complete:
+// everything goes to "<path>.part" and is renamed onto <path> by commit() (rename is atomic on
+// POSIX). If the writer is destroyed without commit() the partial file is removed.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace comminute {
+
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::filesystem::path path, std::ios::openmode mode = std::ios::out);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  std::ofstream& stream() { return out_; }
+  const std::filesystem::path& temp_path() const { return tmp_; }
+  void commit();  // flush, fsync-free rename to the final path; throws Error on I/O failure
+
+ private:
+  std::filesystem::path path_, tmp_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
+}  // namespace comminute

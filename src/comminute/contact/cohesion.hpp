@@ -1,0 +1,19 @@
+#pragma once
+// Adhesion models ([contact] cohesion = "none" | "sjkr").
+#include <string>
+
+#include "comminute/contact/contact_law.hpp"
+
+namespace comminute {
+
+class Cohesion {
+ public:
+  virtual ~Cohesion() = default;
+  virtual std::string name() const = 0;
+  // Adds the (attractive, negative) adhesive normal force for a touching contact.
+  virtual void compute(const ContactKinematics& k, const PairParameters& p, ContactForces& out) const = 0;
+};
+
+using CohesionRegistry = Registry<Cohesion>;
+
+}  // namespace comminute

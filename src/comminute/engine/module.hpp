@@ -1,0 +1,29 @@
+#pragma once
+// Modules take part in the time step without the loop knowing what they are: insertion, bonds,
+// breakage, observers. The step is
+//   half kick + drift  ->  pre_force  ->  forces (contacts, walls, gravity)  ->  post_force
+//   ->  half kick  ->  end_of_step
+// A module that inserts or removes particles calls Simulation::particles_changed() so that the
+// neighbour list is rebuilt (contact history survives: it is keyed by particle ids).
+#include <string>
+
+#include "comminute/core/archive.hpp"
+
+namespace comminute {
+
+class Simulation;
+
+class Module {
+ public:
+  virtual ~Module() = default;
+  virtual std::string name() const = 0;
+  virtual void setup(Simulation&) {}
+  virtual void pre_force(Simulation&) {}
+  virtual void post_force(Simulation&) {}
+  virtual void end_of_step(Simulation&) {}
+  // Checkpoint: put/get the module's state under names prefixed with name() + "/".
+  virtual void save(Archive&) const {}
+  virtual void load(const Archive&) {}
+};
+
+}  // namespace comminute

@@ -1,0 +1,109 @@
+#pragma once
+// The DEM engine: particles, materials, walls, one contact law, gravity, modules and the time
+// loop (velocity Verlet for translation and rotation).
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "comminute/contact/contact_law.hpp"
+#include "comminute/contact/cohesion.hpp"
+#include "comminute/contact/rolling_resistance.hpp"
+#include "comminute/engine/module.hpp"
+#include "comminute/geometry/wall.hpp"
+#include "comminute/neighbor/neighbor_list.hpp"
+#include "comminute/particles/material.hpp"
+#include "comminute/particles/particle_store.hpp"
+
+namespace comminute {
+
+// Particle–wall contacts found in the last step (history keyed by particle id, wall, feature).
+struct WallContactRecord {
+  std::uint32_t particle = 0;  // current slot
+  std::uint32_t wall = 0;
+  std::int32_t feature = 0;
+  ContactHistory history;
+};
+
+// Running energy ledger (J), for the time-series output and conservation checks.
+struct EnergyLedger {
+  double damping = 0;    // dissipated by normal/tangential dashpots
+  double friction = 0;   // dissipated by sliding and rolling friction
+  double removed = 0;    // taken out by modules (breakage, particle removal), see their logs
+  double wall_work = 0;  // work done on the particles by moving walls
+};
+
+struct Observables {
+  double time = 0;
+  std::uint64_t step = 0;
+  std::size_t particles = 0;
+  std::size_t contacts = 0;       // particle–particle contacts with overlap > 0
+  std::size_t wall_contacts = 0;  // particle–wall contacts with overlap > 0
+  double kinetic_translational = 0;  // J
+  double kinetic_rotational = 0;     // J
+  double potential_gravity = 0;      // J, relative to z = 0 along -gravity
+  double elastic = 0;                // J, stored in contacts
+  EnergyLedger ledger;
+};
+
+struct SimulationOptions {
+  double skin = 0;            // m, Verlet skin (0: 0.1 x mean diameter is chosen at setup)
+  int sort_every = 20;        // re-sort particles by cell every this many list rebuilds (0: never)
+};
+
+class Simulation {
+ public:
+  Simulation();
+  ~Simulation();
+
+  ParticleStore particles;
+  MaterialTable materials;
+  std::vector<std::unique_ptr<Wall>> walls;
+  std::unique_ptr<ContactLaw> law;
+  std::unique_ptr<RollingResistance> rolling;  // may be null (no rolling resistance)
+  std::unique_ptr<Cohesion> cohesion;          // may be null (no adhesion)
+  std::vector<std::unique_ptr<Module>> modules;
+  Vec3 gravity{0, 0, -9.81};  // m/s2
+  double dt = 0;              // s
+  double time = 0;            // s
+  std::uint64_t step_count = 0;
+  std::uint64_t seed = 1;
+  SimulationOptions options;
+  EnergyLedger ledger;
+
+  // Prepares neighbour search and modules; call after particles/walls/law are set.
+  void setup();
+  // Advances n steps. Throws SimulationError on a non-finite position/velocity (names id, time).
+  void run(std::uint64_t n);
+  void step();
+  // Forces the neighbour list to be rebuilt before the next force computation.
+  void particles_changed() { need_rebuild_ = true; }
+
+  const NeighborList& pairs() const { return nlist_; }
+  NeighborList& pairs() { return nlist_; }
+  const std::vector<WallContactRecord>& wall_contacts() const { return wall_contacts_; }
+  std::vector<WallContactRecord>& wall_contacts() { return wall_contacts_; }
+  Observables observe() const;
+  // Smallest Rayleigh time over the particles (s): pi R sqrt(rho/G) / (0.1631 nu + 0.8766).
+  double rayleigh_time() const;
+  std::uint64_t neighbor_rebuilds() const { return rebuilds_; }
+
+  void save(Archive& a) const;
+  void load(const Archive& a);
+
+ private:
+  void compute_forces();
+  void particle_particle_forces();
+  void particle_wall_forces();
+  void rebuild_if_needed();
+  void check_finite() const;
+
+  NeighborList nlist_;
+  std::vector<WallContactRecord> wall_contacts_;
+  std::vector<Vec3> x_at_build_;
+  bool need_rebuild_ = true;
+  bool is_setup_ = false;
+  std::uint64_t rebuilds_ = 0;
+  double elastic_energy_ = 0;
+};
+
+}  // namespace comminute

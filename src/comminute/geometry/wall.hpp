@@ -1,0 +1,57 @@
+#pragma once
+// Walls behind one interface: infinite plane, box, finite cylinder (inside or outside); triangle
+// meshes later implement the same interface. A wall reports the contact features a sphere touches
+// (a box corner touches up to three faces), moves by its Kinematics, and accumulates the force and
+// torque the particles exert on it (outputs).
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "comminute/core/vec3.hpp"
+
+namespace comminute {
+
+// Prescribed rigid motion: translation at constant velocity plus rotation at constant angular
+// velocity about an axis through `center` (which moves with the wall).
+struct Kinematics {
+  Vec3 velocity;          // m/s
+  Vec3 angular_velocity;  // rad/s
+  Vec3 center;            // m, a point on the rotation axis (current position)
+  // Velocity of the wall material at point p.
+  Vec3 velocity_at(const Vec3& p) const { return velocity + cross(angular_velocity, p - center); }
+  bool moving() const { return norm2(velocity) > 0 || norm2(angular_velocity) > 0; }
+};
+
+struct WallContact {
+  Vec3 normal;        // unit, from the wall into the particle
+  Vec3 point;         // contact point on the wall surface, m
+  double overlap = 0; // m (> 0 when touching; candidates within the skin may be <= 0)
+  int feature = 0;    // which face/edge/triangle (history key, stable over time)
+};
+
+// A triangle surface for visualisation (ParaView) of any wall.
+struct SurfaceMesh {
+  std::vector<Vec3> vertices;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+class Wall {
+ public:
+  virtual ~Wall() = default;
+  virtual std::string type() const = 0;
+  // Appends the features of this wall closer to sphere (x, r) than r + margin. Returns the count.
+  virtual int contacts(const Vec3& x, double r, double margin, std::vector<WallContact>& out) const = 0;
+  // Moves the geometry rigidly over dt with the current kinematics.
+  virtual void advance(double dt) = 0;
+  // Triangulated surface for output; `extent` (m) bounds infinite walls.
+  virtual SurfaceMesh surface(double extent) const = 0;
+
+  std::string name;           // from the case file, used in outputs
+  std::uint16_t material = 0;
+  Kinematics kinematics;
+  Vec3 force;   // N, total force exerted by particles on the wall in the last step
+  Vec3 torque;  // N m, about kinematics.center
+};
+
+}  // namespace comminute

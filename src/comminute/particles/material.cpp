@@ -1,0 +1,55 @@
+#include "comminute/particles/material.hpp"
+
+#include <cmath>
+
+#include "comminute/core/units.hpp"
+
+namespace comminute {
+
+double damping_beta(double restitution) {
+  const double l = std::log(restitution);
+  return l / std::sqrt(l * l + units::pi * units::pi);
+}
+
+std::uint16_t MaterialTable::add(const Material& m) {
+  const std::size_t n = materials_.size();
+  std::vector<PairInput> old = inputs_;
+  materials_.push_back(m);
+  inputs_.assign((n + 1) * (n + 1), PairInput{});
+  pairs_.assign((n + 1) * (n + 1), PairParameters{});
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = 0; b < n; ++b) inputs_[a * (n + 1) + b] = old[a * n + b];
+  for (std::size_t a = 0; a <= n; ++a)
+    for (std::size_t b = 0; b <= n; ++b)
+      rebuild_pair(static_cast<std::uint16_t>(a), static_cast<std::uint16_t>(b),
+                   inputs_[a * (n + 1) + b]);
+  return static_cast<std::uint16_t>(n);
+}
+
+void MaterialTable::set_pair(std::uint16_t a, std::uint16_t b, const PairInput& p) {
+  rebuild_pair(a, b, p);
+  rebuild_pair(b, a, p);
+}
+
+void MaterialTable::rebuild_pair(std::uint16_t a, std::uint16_t b, const PairInput& p) {
+  const std::size_t n = materials_.size();
+  inputs_[a * n + b] = p;
+  const Material& m1 = materials_[a];
+  const Material& m2 = materials_[b];
+  PairParameters q;
+  static_cast<PairInput&>(q) = p;
+  const double v1 = m1.poisson_ratio, v2 = m2.poisson_ratio;
+  q.effective_modulus = 1.0 / ((1 - v1 * v1) / m1.youngs_modulus + (1 - v2 * v2) / m2.youngs_modulus);
+  q.effective_shear_modulus = 1.0 / (2 * (2 - v1) * (1 + v1) / m1.youngs_modulus +
+                                     2 * (2 - v2) * (1 + v2) / m2.youngs_modulus);
+  q.damping_beta = damping_beta(p.restitution);
+  pairs_[a * n + b] = q;
+}
+
+int MaterialTable::find(const std::string& name) const {
+  for (std::size_t k = 0; k < materials_.size(); ++k)
+    if (materials_[k].name == name) return static_cast<int>(k);
+  return -1;
+}
+
+}  // namespace comminute

@@ -1,0 +1,123 @@
+#include "comminute/particles/particle_store.hpp"
+
+#include <fmt/format.h>
+
+#include "comminute/core/error.hpp"
+#include "comminute/core/units.hpp"
+
+namespace comminute {
+
+std::uint64_t ParticleStore::add(const ParticleInit& p) {
+  const double m = p.density * units::sphere_volume(p.radius);
+  return add_with_mass(p, m);
+}
+
+std::uint64_t ParticleStore::add_with_mass(const ParticleInit& p, double m) {
+  x.push_back(p.x);
+  v.push_back(p.v);
+  w.push_back(p.w);
+  f.push_back({});
+  t.push_back({});
+  radius.push_back(p.radius);
+  mass.push_back(m);
+  inertia.push_back(0.4 * m * p.radius * p.radius);
+  id.push_back(next_id_);
+  material.push_back(p.material);
+  flags.push_back(p.flags);
+  for (std::size_t k = 0; k < fields_.size(); ++k) fields_[k].push_back(field_defaults_[k]);
+  return next_id_++;
+}
+
+namespace {
+template <class T>
+void compact_vector(std::vector<T>& a, const std::vector<std::uint32_t>& flags) {
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (!(flags[i] & pflag::remove)) a[out++] = a[i];
+  a.resize(out);
+}
+template <class T>
+void permute_vector(std::vector<T>& a, const std::vector<std::size_t>& order, std::vector<T>& tmp) {
+  tmp.resize(a.size());
+  for (std::size_t k = 0; k < order.size(); ++k) tmp[k] = a[order[k]];
+  a.swap(tmp);
+}
+}  // namespace
+
+std::size_t ParticleStore::compact() {
+  const std::size_t before = size();
+  const std::vector<std::uint32_t> fl = flags;
+  compact_vector(x, fl);
+  compact_vector(v, fl);
+  compact_vector(w, fl);
+  compact_vector(f, fl);
+  compact_vector(t, fl);
+  compact_vector(radius, fl);
+  compact_vector(mass, fl);
+  compact_vector(inertia, fl);
+  compact_vector(id, fl);
+  compact_vector(material, fl);
+  for (auto& fld : fields_) compact_vector(fld, fl);
+  compact_vector(flags, fl);
+  return before - size();
+}
+
+void ParticleStore::permute(const std::vector<std::size_t>& order) {
+  std::vector<Vec3> tv;
+  std::vector<double> td;
+  permute_vector(x, order, tv);
+  permute_vector(v, order, tv);
+  permute_vector(w, order, tv);
+  permute_vector(f, order, tv);
+  permute_vector(t, order, tv);
+  permute_vector(radius, order, td);
+  permute_vector(mass, order, td);
+  permute_vector(inertia, order, td);
+  for (auto& fld : fields_) permute_vector(fld, order, td);
+  std::vector<std::uint64_t> ti;
+  permute_vector(id, order, ti);
+  std::vector<std::uint16_t> tm;
+  permute_vector(material, order, tm);
+  std::vector<std::uint32_t> tf;
+  permute_vector(flags, order, tf);
+}
+
+void ParticleStore::clear_forces() {
+  for (auto& a : f) a = {};
+  for (auto& a : t) a = {};
+}
+
+std::size_t ParticleStore::add_field(const std::string& name, double initial_value) {
+  for (std::size_t k = 0; k < field_names_.size(); ++k)
+    if (field_names_[k] == name) return k;
+  field_names_.push_back(name);
+  field_defaults_.push_back(initial_value);
+  fields_.emplace_back(size(), initial_value);
+  return fields_.size() - 1;
+}
+
+std::size_t ParticleStore::field_index(const std::string& name) const {
+  for (std::size_t k = 0; k < field_names_.size(); ++k)
+    if (field_names_[k] == name) return k;
+  throw Error(fmt::format("no per-particle field named '{}'", name));
+}
+
+bool ParticleStore::has_field(const std::string& name) const {
+  for (const auto& n : field_names_)
+    if (n == name) return true;
+  return false;
+}
+
+double ParticleStore::total_mass() const {
+  double m = 0;
+  for (double mi : mass) m += mi;
+  return m;
+}
+
+Vec3 ParticleStore::total_momentum() const {
+  Vec3 p;
+  for (std::size_t i = 0; i < size(); ++i) p += mass[i] * v[i];
+  return p;
+}
+
+}  // namespace comminute

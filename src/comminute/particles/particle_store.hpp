@@ -1,0 +1,80 @@
+#pragma once
+// The particle store: structure of arrays, one contiguous vector per quantity, so hot loops run
+// over plain arrays and the store can be sorted by cell. Index i is a particle's current slot and
+// changes when particles are sorted, inserted or removed; id[i] is its identity, unique and never
+// reused within a run (64-bit counter). Modules that need more per-particle data (damage,
+// fracture energy, composition...) register named scalar fields, which move with the particles.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "comminute/core/vec3.hpp"
+
+namespace comminute {
+
+// Particle flags (bit mask).
+namespace pflag {
+inline constexpr std::uint32_t fixed = 1u << 0;        // not integrated (e.g. anvil particles)
+inline constexpr std::uint32_t unbreakable = 1u << 1;  // fines / dummy particles
+inline constexpr std::uint32_t growing = 1u << 2;      // fragment still growing to full size
+inline constexpr std::uint32_t remove = 1u << 3;       // marked for removal at the next compact()
+}  // namespace pflag
+
+struct ParticleInit {
+  Vec3 x, v, w;
+  double radius = 0.0;  // m
+  double density = 0.0; // kg/m3 (mass and inertia follow for a solid sphere)
+  std::uint16_t material = 0;
+  std::uint32_t flags = 0;
+};
+
+class ParticleStore {
+ public:
+  // Kinematics (SI): position m, velocity m/s, angular velocity rad/s, force N, torque N m.
+  std::vector<Vec3> x, v, w, f, t;
+  std::vector<double> radius;      // m
+  std::vector<double> mass;        // kg
+  std::vector<double> inertia;     // kg m2 (solid sphere 2/5 m r^2 unless set otherwise)
+  std::vector<std::uint64_t> id;   // unique, never reused
+  std::vector<std::uint16_t> material;
+  std::vector<std::uint32_t> flags;
+
+  std::size_t size() const { return id.size(); }
+  bool empty() const { return id.empty(); }
+
+  // Adds a particle (mass and inertia of a solid sphere from radius and density); returns id.
+  std::uint64_t add(const ParticleInit& p);
+  // Adds with an explicit mass (fragments carry their final mass while still growing).
+  std::uint64_t add_with_mass(const ParticleInit& p, double mass);
+  // Removes all particles whose flags have pflag::remove; keeps the order of the others.
+  // Returns the number removed.
+  std::size_t compact();
+  // Reorders so that new slot k holds old slot order[k] (order is a permutation).
+  void permute(const std::vector<std::size_t>& order);
+  void clear_forces();
+
+  // Named per-particle scalar fields owned by modules. Registering twice returns the same index.
+  std::size_t add_field(const std::string& name, double initial_value);
+  std::size_t field_index(const std::string& name) const;  // throws Error if unknown
+  bool has_field(const std::string& name) const;
+  std::vector<double>& field(std::size_t k) { return fields_[k]; }
+  const std::vector<double>& field(std::size_t k) const { return fields_[k]; }
+  const std::vector<std::string>& field_names() const { return field_names_; }
+  const std::vector<double>& field_defaults() const { return field_defaults_; }
+
+  std::uint64_t next_id() const { return next_id_; }
+  void set_next_id(std::uint64_t n) { next_id_ = n; }  // checkpoints only
+
+  // Total mass (kg) and linear momentum (kg m/s) — conservation checks and outputs.
+  double total_mass() const;
+  Vec3 total_momentum() const;
+
+ private:
+  std::uint64_t next_id_ = 1;
+  std::vector<std::vector<double>> fields_;
+  std::vector<std::string> field_names_;
+  std::vector<double> field_defaults_;
+};
+
+}  // namespace comminute

@@ -1,7 +1,9 @@
 #pragma once
-// Coulomb friction with a tangential spring whose history is carried in the contact: the stored
-// displacement is rotated into the current tangent plane (keeping its length), incremented by
-// v_t dt, and truncated to the Coulomb limit when the contact slides (dashpot off while sliding).
+// Coulomb friction with a tangential spring–dashpot whose history is carried in the contact: the
+// stored displacement is rotated into the current tangent plane (keeping its length) and
+// incremented by v_t dt. When the spring force exceeds mu |F_n| the contact slides: the spring is
+// truncated to the limit and the dashpot is off; while it sticks, spring + dashpot are capped at
+// the limit by reducing the dashpot part.
 #include <cmath>
 
 #include "comminute/contact/contact_law.hpp"
@@ -21,23 +23,23 @@ inline void coulomb_tangential(const ContactKinematics& k, double kt, double ct,
     const double l2 = norm2(xi);
     if (l2 > 0.0) xi *= std::sqrt(len2 / l2);
   }
-  xi += k.tangential_velocity * k.dt;
-  Vec3 ft = -kt * xi - ct * k.tangential_velocity;
-  const double ft2 = norm2(ft);
-  if (ft2 > limit * limit) {
-    // sliding: the spring is cut back so that |k_t xi| = mu |F_n|; the energy it loses is friction
-    const double spring = kt * std::sqrt(norm2(xi));
-    const double before = 0.5 * kt * norm2(xi);
-    if (spring > 0.0) {
-      xi *= limit / spring;
-      ft = -kt * xi;
-    } else {
-      ft = {};
-      xi = {};
-    }
-    out.friction_dissipation += before - 0.5 * kt * norm2(xi);
+  const Vec3 trial = xi + k.tangential_velocity * k.dt;
+  xi = trial;
+  const double spring = kt * std::sqrt(norm2(xi));
+  Vec3 ft;
+  if (spring > limit) {
+    // sliding: the spring is cut back to |k_t xi| = mu |F_n| and the dashpot is off; the friction
+    // force does work |F_t| |slip|, slip being the part of the motion the spring did not take
+    xi *= limit / spring;
+    ft = -kt * xi;
+    out.friction_dissipation += limit * norm(trial - xi);
   } else {
-    out.damping_dissipation += ct * norm2(k.tangential_velocity) * k.dt;
+    // sticking: spring + dashpot, the total capped at mu |F_n| by reducing the dashpot part
+    const Vec3 fs = -kt * xi;
+    ft = fs - ct * k.tangential_velocity;
+    const double ft2 = norm2(ft);
+    if (ft2 > limit * limit) ft *= limit / std::sqrt(ft2);
+    out.damping_dissipation += -dot(ft - fs, k.tangential_velocity) * k.dt;
   }
   h.tangential_spring = xi;
   out.tangential_force = ft;

@@ -18,6 +18,8 @@ class NoWall : public Wall {
   std::string type() const override { return "none"; }
   int contacts(const Vec3&, double, double, std::vector<WallContact>&) const override { return 0; }
   void advance(double) override {}
+  void save(Archive&, const std::string&) const override {}
+  void load(const Archive&, const std::string&) override {}
   SurfaceMesh surface(double) const override { return {}; }
 };
 

@@ -23,6 +23,8 @@ class SquareWall : public Wall {
   std::string type() const override { return "square"; }
   int contacts(const Vec3&, double, double, std::vector<WallContact>&) const override { return 0; }
   void advance(double) override {}
+  void save(Archive&, const std::string&) const override {}
+  void load(const Archive&, const std::string&) override {}
   SurfaceMesh surface(double extent) const override {
     const double h = extent / 2;
     return {{{-h, -h, z0_}, {h, -h, z0_}, {h, h, z0_}, {-h, h, z0_}}, {{{0, 1, 2}}, {{0, 2, 3}}}};

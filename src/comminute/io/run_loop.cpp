@@ -15,7 +15,7 @@ int run_until(Simulation& sim, double end_time, OutputModule* output, ProgressRe
   while (sim.time < end_time - 0.5 * sim.dt) {
     if (stop && stop->requested()) {
       if (progress) progress->finish(sim);
-      if (output) output->finish(sim);
+      if (output) output->write_checkpoint(sim);
       fmt::print(log, "stopped by {} at t = {:.9g} s (step {}){}\n", stop->signal_name(), sim.time,
                  sim.step_count,
                  output

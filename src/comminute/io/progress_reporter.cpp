@@ -61,11 +61,7 @@ void ProgressReporter::update(const ProgressSample& s) {
 
 void ProgressReporter::update(double time, std::uint64_t step, std::size_t particles,
                               const std::function<std::size_t()>& contacts) {
-  if (have_step_ && step > last_step_)
-    window_particle_steps_ +=
-        static_cast<double>(step - last_step_) * static_cast<double>(particles);
-  last_step_ = step;
-  have_step_ = true;
+  count_steps(step, particles);
   const double now = clock_();
   if (now - last_print_wall_ < (terminal_ ? terminal_period_ : plain_period_)) return;
   print({time, step, particles, contacts()}, now, false);
@@ -76,11 +72,19 @@ void ProgressReporter::finish(const Simulation& sim) {
 }
 
 void ProgressReporter::finish(const ProgressSample& s) {
-  if (have_step_ && s.step > last_step_)
-    window_particle_steps_ +=
-        static_cast<double>(s.step - last_step_) * static_cast<double>(s.particles);
-  last_step_ = s.step;
+  count_steps(s.step, s.particles);
   print(s, clock_(), true);
+}
+
+// Steps since the last call times the current particle count.
+void ProgressReporter::count_steps(std::uint64_t step, std::size_t particles) {
+  if (have_step_ && step > last_step_) {
+    const double n = static_cast<double>(step - last_step_) * static_cast<double>(particles);
+    window_particle_steps_ += n;
+    total_particle_steps_ += n;
+  }
+  last_step_ = step;
+  have_step_ = true;
 }
 
 std::string ProgressReporter::line(const ProgressSample& s, double rate, double eta) const {
@@ -97,9 +101,8 @@ void ProgressReporter::print(const ProgressSample& s, double now, bool last) {
   const double rate = window > 0 ? window_particle_steps_ / window : 0.0;
   // ETA from the average pace of the whole run so far (simulated seconds per wall second).
   const double done = s.time - start_time_, elapsed = now - wall_start_;
-  const double eta = last ? 0.0
-                          : (done > 0 ? elapsed * (end_time_ - s.time) / done
-                                      : std::numeric_limits<double>::infinity());
+  const double eta =
+      done > 0 ? elapsed * (end_time_ - s.time) / done : std::numeric_limits<double>::infinity();
   const std::string text = line(s, rate, eta);
   if (terminal_)
     fmt::print(out_, "\r{}\x1b[K{}", text, last ? "\n" : "");

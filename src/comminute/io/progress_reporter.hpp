@@ -42,10 +42,16 @@ class ProgressReporter {
   void finish(const Simulation& sim);
   void finish(const ProgressSample& s);
 
+  // Particle-steps since construction (for the run's summary line).
+  double total_particle_steps() const { return total_particle_steps_; }
+  // Wall-clock seconds since construction.
+  double elapsed() const { return clock_() - wall_start_; }
+
   // The text of one line (no line ending), for a rate in particle-steps per second.
   std::string line(const ProgressSample& s, double rate, double eta_seconds) const;
 
  private:
+  void count_steps(std::uint64_t step, std::size_t particles);
   void print(const ProgressSample& s, double now, bool last);
 
   double start_time_, end_time_;
@@ -56,6 +62,7 @@ class ProgressReporter {
   double wall_start_;
   double last_print_wall_;
   double window_particle_steps_ = 0;  // since the last printed line
+  double total_particle_steps_ = 0;
   std::uint64_t last_step_ = 0;
   bool have_step_ = false;
 };

@@ -12,6 +12,7 @@ namespace comminute::io {
 int run_until(Simulation& sim, double end_time, OutputModule* output, ProgressReporter* progress,
               const StopRequest* stop, std::FILE* log) {
   if (output) output->start(sim);
+  if (progress) progress->update(sim);  // the starting step, so every step is counted
   while (sim.time < end_time - 0.5 * sim.dt) {
     if (stop && stop->requested()) {
       if (progress) progress->finish(sim);

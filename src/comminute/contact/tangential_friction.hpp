@@ -2,6 +2,8 @@
 // Coulomb friction with a tangential spring whose history is carried in the contact: the stored
 // displacement is rotated into the current tangent plane (keeping its length), incremented by
 // v_t dt, and truncated to the Coulomb limit when the contact slides (dashpot off while sliding).
+#include <cmath>
+
 #include "comminute/contact/contact_law.hpp"
 
 namespace comminute {
@@ -9,7 +11,37 @@ namespace comminute {
 // kt: tangential stiffness (N/m), ct: tangential damping (N s/m), limit: mu |F_n| (N).
 // Sets out.tangential_force, adds to out.stored_energy, out.damping_dissipation,
 // out.friction_dissipation.
-void coulomb_tangential(const ContactKinematics& k, double kt, double ct, double limit,
-                        ContactHistory& h, ContactForces& out);
+inline void coulomb_tangential(const ContactKinematics& k, double kt, double ct, double limit,
+                        ContactHistory& h, ContactForces& out) {
+  Vec3 xi = h.tangential_spring;
+  // rotate into the current tangent plane, preserving the magnitude
+  const double len2 = norm2(xi);
+  if (len2 > 0.0) {
+    xi -= dot(xi, k.normal) * k.normal;
+    const double l2 = norm2(xi);
+    if (l2 > 0.0) xi *= std::sqrt(len2 / l2);
+  }
+  xi += k.tangential_velocity * k.dt;
+  Vec3 ft = -kt * xi - ct * k.tangential_velocity;
+  const double ft2 = norm2(ft);
+  if (ft2 > limit * limit) {
+    // sliding: the spring is cut back so that |k_t xi| = mu |F_n|; the energy it loses is friction
+    const double spring = kt * std::sqrt(norm2(xi));
+    const double before = 0.5 * kt * norm2(xi);
+    if (spring > 0.0) {
+      xi *= limit / spring;
+      ft = -kt * xi;
+    } else {
+      ft = {};
+      xi = {};
+    }
+    out.friction_dissipation += before - 0.5 * kt * norm2(xi);
+  } else {
+    out.damping_dissipation += ct * norm2(k.tangential_velocity) * k.dt;
+  }
+  h.tangential_spring = xi;
+  out.tangential_force = ft;
+  out.stored_energy += 0.5 * kt * norm2(xi);
+}
 
 }  // namespace comminute

@@ -8,6 +8,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "comminute/core/error.hpp"
 #include "comminute/core/parallel.hpp"
 #include "comminute/core/rng.hpp"
 #include "comminute/geometry/box_wall.hpp"
@@ -179,4 +180,25 @@ TEST(OutputModule, InterruptAndRestartReproduceTheUninterruptedRun) {
        {"timeseries.csv", "particles.pvd", "walls.pvd", "particles/particles_0000001500.vtp",
         "walls/walls_0000001500.vtp", "particles/particles_0000001250.vtp"})
     EXPECT_TRUE(slurp(dir / "a" / f) == slurp(dir / "b" / f)) << f << " differs";
+}
+
+TEST(OutputModule, UnknownFieldIsAnInputErrorAtStart) {
+  const TestDir dir;
+  DemRun run = make_run(dir.path());
+  io::OutputOptions o;
+  o.directory = dir.path();
+  o.fields = std::vector<std::string>{"damgae"};
+  o.case_file = "case.toml";
+  o.fields_line = 12;
+  io::OutputModule out(o, end_time);
+  run.sim->setup();
+  try {
+    out.start(*run.sim);
+    FAIL() << "unknown field accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "output.fields");
+    EXPECT_EQ(e.line(), 12);
+    EXPECT_NE(std::string(e.what()).find("'damgae'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("known: damage"), std::string::npos) << e.what();
+  }
 }

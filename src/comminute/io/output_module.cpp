@@ -1,6 +1,7 @@
 #include "comminute/io/output_module.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -39,8 +40,22 @@ OutputModule::OutputModule(OutputOptions options, double end_time) : options_(st
   if (!options_.particles) particles_.cadence = {};
 }
 
+// Field names can only be checked once the modules have registered their fields (setup).
+void OutputModule::check_fields(const ParticleStore& p) const {
+  if (!options_.fields) return;
+  for (const auto& name : *options_.fields)
+    if (!p.has_field(name))
+      throw InputError(
+          options_.case_file.string(), "output.fields", options_.fields_line,
+          fmt::format("'{}' is not a per-particle field of this case (known: {})", name,
+                      p.field_names().empty()
+                          ? std::string("none")
+                          : fmt::format("{}", fmt::join(p.field_names(), ", "))));
+}
+
 void OutputModule::start(Simulation& sim) {
   if (started_) return;
+  check_fields(sim.particles);
   started_ = true;
   std::vector<std::string> names;
   for (const auto& w : sim.walls) names.push_back(w->name);
@@ -106,14 +121,7 @@ void OutputModule::write_checkpoint(Simulation& sim) {
 }
 
 void OutputModule::write_snapshot(Simulation& sim) {
-  try {
-    vtk_->write_particles(sim.particles, sim.time, sim.step_count);
-  } catch (const Error& e) {
-    if (options_.fields && !sim.particles.empty())  // most likely an unknown field name
-      throw InputError(options_.case_file.string(), "output.fields", options_.fields_line,
-                       e.what());
-    throw;
-  }
+  vtk_->write_particles(sim.particles, sim.time, sim.step_count);
   if (options_.walls && !sim.walls.empty()) {
     if (extent_ == 0) extent_ = wall_extent(sim);
     vtk_->write_walls(sim.walls, sim.time, sim.step_count, extent_);

@@ -51,6 +51,7 @@ class OutputModule : public Module {
     void done(double time, std::uint64_t step, double dt);
   };
 
+  void check_fields(const ParticleStore& p) const;
   void write_snapshot(Simulation& sim);
   void write_row(Simulation& sim);
   double wall_extent(const Simulation& sim) const;

@@ -81,7 +81,7 @@ def main():
     ax2.set_ylim(bottom=0)
     h1, l1 = ax.get_legend_handles_labels()
     h2, l2 = ax2.get_legend_handles_labels()
-    ax.legend(h1 + h2, l1 + l2, fontsize=8, loc="best")
+    ax.legend(h1 + h2, l1 + l2, fontsize=8, loc="center right")
     ax.grid(alpha=0.3)
     ax.set_title("Contacts and particles")
 

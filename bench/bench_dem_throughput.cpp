@@ -6,9 +6,20 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <fstream>
 #include <cstdlib>
 
 #include "comminute/io/dem_case.hpp"
+
+namespace {
+// Resident set size now (MB), from /proc/self/statm.
+double rss_mb() {
+  std::ifstream f("/proc/self/statm");
+  double pages = 0, resident = 0;
+  f >> pages >> resident;
+  return resident * 4096.0 / (1024.0 * 1024.0);
+}
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace comminute;
@@ -24,6 +35,7 @@ int main(int argc, char** argv) {
     file.reject_unknown();
     Simulation& sim = *c.sim;
     sim.setup();
+    const double rss_setup = rss_mb();
     sim.run(static_cast<std::uint64_t>(warm));
     const auto t0 = std::chrono::steady_clock::now();
     sim.run(static_cast<std::uint64_t>(steps));
@@ -33,10 +45,11 @@ int main(int argc, char** argv) {
     const Observables o = sim.observe();
     const double n = static_cast<double>(sim.particles.size());
     fmt::print("N={} threads={} steps={} seconds={:.3f} particle_steps_per_s={:.4g} contacts={} "
-               "rebuilds={} peak_rss_MB={:.0f} bytes_per_particle={:.0f}\n",
+               "pairs={} rebuilds={} rss_setup_MB={:.0f} rss_end_MB={:.0f} peak_rss_MB={:.0f} "
+               "bytes_per_particle={:.0f}\n",
                sim.particles.size(), omp_get_max_threads(), steps, s,
-               n * static_cast<double>(steps) / s, o.contacts, sim.neighbor_rebuilds(),
-               static_cast<double>(ru.ru_maxrss) / 1024.0, static_cast<double>(ru.ru_maxrss) * 1024.0 / n);
+               n * static_cast<double>(steps) / s, o.contacts, sim.pairs().size(), sim.neighbor_rebuilds(),
+               rss_setup, rss_mb(), static_cast<double>(ru.ru_maxrss) / 1024.0, static_cast<double>(ru.ru_maxrss) * 1024.0 / n);
   } catch (const std::exception& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return 2;

@@ -10,12 +10,19 @@
 
 namespace comminute {
 
+namespace {
+// Below this many particles (pairs: twice as many) loops run serially: an OpenMP region costs
+// microseconds, more than the work of a small system.
+constexpr std::size_t kParallelMin = 4096;
+}  // namespace
+
 Simulation::Simulation() = default;
 Simulation::~Simulation() = default;
 
 void Simulation::setup() {
   if (!law) throw Error("simulation has no contact law");
   if (!(dt > 0)) throw Error("simulation time step is not set");
+  flush_denormals_to_zero();
   for (auto& m : modules) m->setup(*this);
   is_setup_ = true;
   need_rebuild_ = true;
@@ -46,7 +53,7 @@ void Simulation::kick_drift() {
   const double h = 0.5 * dt;
   const Vec3 g = gravity;
   double worst = 0;
-#pragma omp parallel for schedule(static) reduction(max : worst)
+#pragma omp parallel for schedule(static) reduction(max : worst) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     if (!(p.flags[i] & pflag::fixed)) {
       p.v[i] += (h / p.mass[i]) * p.f[i];
@@ -67,7 +74,7 @@ bool Simulation::kick() {
   const std::size_t n = p.size();
   const double h = 0.5 * dt;
   bool bad = false;
-#pragma omp parallel for schedule(static) reduction(|| : bad)
+#pragma omp parallel for schedule(static) reduction(|| : bad) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     if (!(p.flags[i] & pflag::fixed)) {
       p.v[i] += (h / p.mass[i]) * p.f[i];
@@ -171,7 +178,7 @@ void Simulation::compute_forces() {
   auto& p = particles;
   const std::size_t n = p.size();
   if (!forces_cleared_) {  // set-up, or particles inserted/removed after kick_drift()
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
     for (std::size_t i = 0; i < n; ++i) {
       p.f[i] = p.mass[i] * gravity;
       p.t[i] = {};
@@ -198,7 +205,7 @@ void Simulation::reduce_thread_buffers() {
   const std::size_t n = p.size();
   const std::size_t nb = thread_force_.size();
   if (nb == 0) return;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t b = 0; b < nb; ++b) {
       p.f[i] += thread_force_[b][i];
@@ -209,11 +216,11 @@ void Simulation::reduce_thread_buffers() {
 void Simulation::particle_particle_forces() {
   auto& p = particles;
   const std::size_t n = p.size();
-  const int nt = max_threads();
+  const std::size_t npairs = nlist_.size();
+  const int nt = npairs >= 2 * kParallelMin ? max_threads() : 1;
   thread_force_.resize(static_cast<std::size_t>(nt - 1));
   thread_torque_.resize(static_cast<std::size_t>(nt - 1));
   std::vector<ThreadTally> tally(static_cast<std::size_t>(nt));
-  const std::size_t npairs = nlist_.size();
   const ContactLaw& contact_law = *law;
 #pragma omp parallel num_threads(nt)
   {
@@ -445,6 +452,7 @@ void Simulation::load(const Archive& a) {
   options.skin = a.get_value<double>("sim/skin");
   rebuilds_ = a.get_value<std::uint64_t>("sim/rebuilds");
   ledger = a.get_value<EnergyLedger>("sim/ledger");
+  flush_denormals_to_zero();
   elastic_energy_ = a.get_value<double>("sim/elastic");
   max_disp2_ = a.get_value<double>("sim/max_disp2");
   for (auto& m : modules) m->load(a);

@@ -74,7 +74,7 @@ void NeighborList::build(const ParticleStore& p, double skin) {
   if (!large_set.empty()) large_grid.build(p.x, large_set, 2 * r_max + skin);
 
   // 3. rows by owner slot, built in parallel chunks and concatenated in order (deterministic)
-  const int nt = max_threads();
+  const int nt = n >= 4096 ? max_threads() : 1;  // small systems: a thread team costs more
   auto& tf = thread_first_;
   auto& ts = thread_second_;
   tf.resize(static_cast<std::size_t>(nt));

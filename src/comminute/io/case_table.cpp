@@ -14,6 +14,7 @@ struct CaseFileState {
   std::filesystem::path path;
   toml::table doc;
   std::set<std::string> used;
+  std::set<std::string> asked;  // every key a reader looked for, present or not (suggestions)
 };
 
 namespace {
@@ -88,6 +89,7 @@ void CaseTable::fail(std::string_view key, const std::string& message) const {
 void CaseTable::mark_used(std::string_view key) const { file_->used.insert(key_path(key)); }
 
 const toml::node* CaseTable::get(std::string_view key) const {
+  file_->asked.insert(key_path(key));
   const toml::node* n = table_->get(key);
   if (n != nullptr) file_->used.insert(key_path(key));
   return n;
@@ -96,9 +98,10 @@ const toml::node* CaseTable::get(std::string_view key) const {
 const toml::node& CaseTable::require(std::string_view key) const {
   const toml::node* n = get(key);
   if (n == nullptr) {
-    std::string hint = nearest_name(key, keys());
-    fail({}, fmt::format("missing required key '{}'{}", key,
-                         hint.empty() ? "" : fmt::format(" (found '{}' — a typo?)", hint)));
+    const std::string hint = nearest_name(key, keys());
+    if (!hint.empty())
+      fail(hint, fmt::format("unknown key (did you mean '{}'? it is required)", key));
+    fail({}, fmt::format("missing required key '{}'", key));
   }
   return *n;
 }
@@ -296,29 +299,34 @@ struct Unknown {
   std::vector<std::string> siblings;
 };
 
-void collect_unknown(const toml::table& t, const std::string& base, const std::set<std::string>& used,
+void collect_unknown(const toml::table& t, const std::string& base, const CaseFileState& st,
                      std::vector<Unknown>& out) {
+  // the keys readers asked for in this table, for "did you mean" suggestions
   std::vector<std::string> known;
-  for (const auto& [k, v] : t)
-    if (used.count(join_path(base, k.str()))) known.emplace_back(k.str());
+  const std::string prefix = base.empty() ? "" : base + ".";
+  for (auto it = st.asked.lower_bound(prefix); it != st.asked.end(); ++it) {
+    if (it->compare(0, prefix.size(), prefix) != 0) break;
+    const std::string leaf = it->substr(prefix.size());
+    if (leaf.find_first_of(".[") == std::string::npos) known.push_back(leaf);
+  }
   for (const auto& [k, v] : t) {
     std::string p = join_path(base, k.str());
-    if (!used.count(p)) {
+    if (!st.used.count(p)) {
       out.push_back({static_cast<long>(v.source().begin.line), p, known});
       continue;
     }
-    if (auto sub = v.as_table()) collect_unknown(*sub, p, used, out);
+    if (auto sub = v.as_table()) collect_unknown(*sub, p, st, out);
     if (auto arr = v.as_array())
       for (std::size_t i = 0; i < arr->size(); ++i)
         if (auto e = arr->get(i)->as_table())
-          collect_unknown(*e, fmt::format("{}[{}]", p, i), used, out);
+          collect_unknown(*e, fmt::format("{}[{}]", p, i), st, out);
   }
 }
 }  // namespace
 
 void CaseFile::reject_unknown() const {
   std::vector<Unknown> unknown;
-  collect_unknown(state_->doc, "", state_->used, unknown);
+  collect_unknown(state_->doc, "", *state_, unknown);
   if (unknown.empty()) return;
   auto first = std::min_element(unknown.begin(), unknown.end(),
                                 [](const Unknown& a, const Unknown& b) { return a.line < b.line; });

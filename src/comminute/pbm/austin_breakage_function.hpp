@@ -10,10 +10,10 @@ namespace comminute::pbm {
 class AustinBreakageFunction : public BreakageFunction {
  public:
   struct Parameters {
-    double phi = 0.5;     // Φ, fraction of the fast (fine-producing) term
-    double gamma = 1.0;   // γ
-    double beta = 4.0;    // β
-    double delta = 0.0;   // δ; 0 = normalised
+    double phi = 0.5;              // Φ, fraction of the fast (fine-producing) term
+    double gamma = 1.0;            // γ
+    double beta = 4.0;             // β
+    double delta = 0.0;            // δ; 0 = normalised
     double reference_size = 1e-3;  // D_ref (m), where Φ_D = Φ when δ ≠ 0
   };
   // parent_size(y) converts a parent volume to its size (m) for the non-normalised Φ_D.

@@ -16,8 +16,8 @@ BatchGrinding BatchGrinding::from_models(const SizeGrid& grid, const SelectionFu
                                          const BreakageFunction& function) {
   const std::size_t n = grid.classes();
   std::vector<double> s(n);
-  Eigen::MatrixXd b = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n),
-                                            static_cast<Eigen::Index>(n));
+  Eigen::MatrixXd b =
+      Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
   for (std::size_t j = 0; j < n; ++j) {
     s[j] = rate.rate(grid.size_edge(j + 1), grid.volume_edge(j + 1));
     const double parent = grid.volume_edge(j);  // D_j, the parent class's lower size

@@ -6,7 +6,9 @@
 namespace comminute::pbm {
 
 // seed 003: σ_crit = σ0 x^(−1/m).
-double PowerLawStrength::of_size(double d) const { return sigma0_ * std::pow(d / ref_, -1.0 / m_); }
+double PowerLawStrength::of_size(double d) const {
+  return sigma0_ * std::pow(d / ref_, -1.0 / m_);
+}
 
 // seed 003: σ50 = σ∞ (1 + x0/(x − x_p))^φ.
 double Sigma50Strength::of_size(double d) const {

@@ -19,11 +19,11 @@ std::vector<double> checked_logs(const std::vector<double>& ratios,
   std::vector<double> out;
   for (std::size_t i = 0; i < ratios.size(); ++i) {
     if (!(ratios[i] > 0) || (i > 0 && !(ratios[i] > ratios[i - 1])))
-      throw Error(fmt::format("cumulative table: ratio {} ({}) not increasing in (0, 1]", i,
-                              ratios[i]));
+      throw Error(
+          fmt::format("cumulative table: ratio {} ({}) not increasing in (0, 1]", i, ratios[i]));
     if (!(passing[i] > 0) || passing[i] > 1 || (i > 0 && passing[i] < passing[i - 1]))
-      throw Error(fmt::format("cumulative table: passing {} ({}) not non-decreasing in (0, 1]",
-                              i, passing[i]));
+      throw Error(fmt::format("cumulative table: passing {} ({}) not non-decreasing in (0, 1]", i,
+                              passing[i]));
     out.push_back(std::log(ratios[i]));
   }
   return out;
@@ -33,9 +33,9 @@ std::vector<double> checked_logs(const std::vector<double>& ratios,
 CumulativeTable::CumulativeTable(std::vector<double> ratios, std::vector<double> passing)
     : s_min_(ratios.empty() ? 0 : ratios.front()),
       p_min_(passing.empty() ? 0 : passing.front()),
-      tail_exponent_(ratios.size() < 2 ? 0
-                                       : std::log(passing[1] / passing[0]) /
-                                             std::log(ratios[1] / ratios[0])),
+      tail_exponent_(ratios.size() < 2
+                         ? 0
+                         : std::log(passing[1] / passing[0]) / std::log(ratios[1] / ratios[0])),
       interp_(checked_logs(ratios, passing), std::vector<double>(passing)) {}
 
 double CumulativeTable::passing(double ratio) const {

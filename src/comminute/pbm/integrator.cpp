@@ -43,8 +43,8 @@ constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a
 constexpr double b1 = 35.0 / 384, b3 = 500.0 / 1113, b4 = 125.0 / 192, b5 = -2187.0 / 6784,
                  b6 = 11.0 / 84;
 // error coefficients b − b̂
-constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920,
-                 e5 = -17253.0 / 339200, e6 = 22.0 / 525, e7 = -1.0 / 40;
+constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200,
+                 e6 = 22.0 / 525, e7 = -1.0 / 40;
 }  // namespace
 
 void DormandPrince::advance(const OdeSystem& sys, double& t, double t_end, Eigen::VectorXd& y) {
@@ -67,8 +67,8 @@ void DormandPrince::advance(const OdeSystem& sys, double& t, double t_end, Eigen
   auto &k2 = k_[1], &k3 = k_[2], &k4 = k_[3], &k5 = k_[4], &k6 = k_[5], &k7 = k_[6];
   while (t < t_end) {
     if (stats_.steps + stats_.rejected >= o_.max_steps)
-      throw SimulationError(fmt::format("adaptive integrator: more than {} steps at t = {} s",
-                                        o_.max_steps, t));
+      throw SimulationError(
+          fmt::format("adaptive integrator: more than {} steps at t = {} s", o_.max_steps, t));
     double h = h_;
     if (o_.max_step > 0) h = std::min(h, o_.max_step);
     const bool last = t + h >= t_end * (1 - 1e-14);

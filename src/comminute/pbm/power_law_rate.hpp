@@ -4,20 +4,20 @@
 // Powder Technol. 14 (1976) 71).
 #include <optional>
 
-#include "comminute/pbm/size_grid.hpp"
 #include "comminute/pbm/selection_function.hpp"
+#include "comminute/pbm/size_grid.hpp"
 
 namespace comminute::pbm {
 
 class PowerLawRate : public SelectionFunction {
  public:
   struct Parameters {
-    double k = 1.0;                 // 1/s, the rate at x = x_ref
-    double alpha = 1.0;             // α
+    double k = 1.0;      // 1/s, the rate at x = x_ref
+    double alpha = 1.0;  // α
     GridCoordinate variable = GridCoordinate::size;
-    double reference = 1.0;         // x_ref in m (size) or m³ (volume)
-    std::optional<double> mu;       // μ (m): size where Q = ½; none = no turn-down
-    double lambda = 2.0;            // Λ
+    double reference = 1.0;    // x_ref in m (size) or m³ (volume)
+    std::optional<double> mu;  // μ (m): size where Q = ½; none = no turn-down
+    double lambda = 2.0;       // Λ
   };
   explicit PowerLawRate(Parameters p) : p_(p) {}
   double rate(double size, double volume) const override;

@@ -1,7 +1,7 @@
 #include "comminute/pbm/product_function.hpp"
 
-#include <boost/math/special_functions/beta.hpp>
 #include <algorithm>
+#include <boost/math/special_functions/beta.hpp>
 #include <cmath>
 
 #include "comminute/core/error.hpp"
@@ -11,7 +11,9 @@ namespace comminute::pbm {
 namespace bm = boost::math;
 
 namespace {
-double ratio(double v, double y) { return std::clamp(v / y, 0.0, 1.0); }
+double ratio(double v, double y) {
+  return std::clamp(v / y, 0.0, 1.0);
+}
 }  // namespace
 
 ProductFunction::ProductFunction(double q, double nu) : q_(q), nu_(nu), r_(q * (nu - 1)) {
@@ -24,8 +26,12 @@ double ProductFunction::theta(double z) const {
   return nu_ * std::pow(z, q_ - 1) * std::pow(1 - z, r_ - 1) / bm::beta(q_, r_);
 }
 
-double ProductFunction::z50_number() const { return bm::ibeta_inv(q_, r_, 0.5); }
-double ProductFunction::z50_volume() const { return bm::ibeta_inv(q_ + 1, r_, 0.5); }
+double ProductFunction::z50_number() const {
+  return bm::ibeta_inv(q_, r_, 0.5);
+}
+double ProductFunction::z50_volume() const {
+  return bm::ibeta_inv(q_ + 1, r_, 0.5);
+}
 
 // ∫_0^z ζθ(ζ) dζ = I_z(q+1, r) (zθ is the Beta(q+1, r) density).
 double ProductFunction::cumulative_mass(double v, double y) const {

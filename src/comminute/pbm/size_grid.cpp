@@ -24,8 +24,8 @@ SizeGrid::SizeGrid(std::vector<double> edges, GridCoordinate coordinate, double 
     pivot_volume_.push_back(0.5 * (volume_edges_[i] + volume_edges_[i + 1]));
 }
 
-SizeGrid SizeGrid::logarithmic(double lo, double hi, std::size_t classes,
-                               GridCoordinate coordinate, double shape_factor) {
+SizeGrid SizeGrid::logarithmic(double lo, double hi, std::size_t classes, GridCoordinate coordinate,
+                               double shape_factor) {
   if (!(lo > 0 && hi > lo && classes > 0)) throw Error("SizeGrid: need 0 < lo < hi, classes > 0");
   std::vector<double> e(classes + 1);
   const double step = std::log(hi / lo) / static_cast<double>(classes);
@@ -43,6 +43,8 @@ SizeGrid SizeGrid::geometric(double top, double ratio, std::size_t classes,
   return SizeGrid(std::move(e), coordinate, shape_factor);
 }
 
-double SizeGrid::size_of_volume(double v) const { return std::cbrt(v / shape_factor_); }
+double SizeGrid::size_of_volume(double v) const {
+  return std::cbrt(v / shape_factor_);
+}
 
 }  // namespace comminute::pbm

@@ -21,8 +21,8 @@ ContactFrequencySpectrum::ContactFrequencySpectrum(std::vector<double> stress,
 double ContactFrequencySpectrum::integral_above(double sigma) const {
   if (sigma <= s_.front()) return tail_.front();
   if (sigma >= s_.back()) return 0.0;
-  const std::size_t i = static_cast<std::size_t>(
-      std::upper_bound(s_.begin(), s_.end(), sigma) - s_.begin());  // s_[i-1] <= σ < s_[i]
+  const std::size_t i = static_cast<std::size_t>(std::upper_bound(s_.begin(), s_.end(), sigma) -
+                                                 s_.begin());  // s_[i-1] <= σ < s_[i]
   const double w = (sigma - s_[i - 1]) / (s_[i] - s_[i - 1]);
   const double n_sigma = n_[i - 1] + w * (n_[i] - n_[i - 1]);
   return tail_[i] + 0.5 * (n_sigma + n_[i]) * (s_[i] - sigma);

@@ -1,7 +1,7 @@
 #include "comminute/pbm/t10_breakage_function.hpp"
 
-#include <boost/math/special_functions/beta.hpp>
 #include <algorithm>
+#include <boost/math/special_functions/beta.hpp>
 #include <cmath>
 #include <vector>
 

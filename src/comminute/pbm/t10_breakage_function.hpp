@@ -26,9 +26,9 @@ double t10_at_energy(double A, double b_prime, double specific_energy, double e5
 class T10BreakageFunction : public BreakageFunction {
  public:
   struct Parameters {
-    double A = 50;                // %
-    double b_prime = 1.0;         // b'
-    double specific_energy = 0;   // e, J/kg
+    double A = 50;               // %
+    double b_prime = 1.0;        // b'
+    double specific_energy = 0;  // e, J/kg
     TnFamily family;
   };
   // e50(d): median fracture energy (J/kg) of a parent of size d (m).

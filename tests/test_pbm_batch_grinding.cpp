@@ -92,9 +92,10 @@ TEST(BatchGrinding, FromModelsFollowsAustinsConventions) {
   const double s2 = 1 / std::sqrt(2.0);
   for (Eigen::Index j = 1; j < 8; ++j) {
     EXPECT_NEAR(m.breakage().col(j).sum(), 1.0, 1e-14);
-    if (j >= 2)  // (for j = 1 the class below is the sink, which takes everything)
+    if (j >= 2) {  // (for j = 1 the class below is the sink, which takes everything)
       EXPECT_NEAR(m.breakage()(j - 1, j), 1 - (0.6 * std::pow(s2, 1.1) + 0.4 * std::pow(s2, 4)),
                   1e-14);
+    }
     // S_i = k (x_i/x_ref)^α at the class's upper size.
     EXPECT_NEAR(m.rates()[static_cast<std::size_t>(j)],
                 0.5 * g.size_edge(static_cast<std::size_t>(j) + 1) / 1e-3, 1e-12);

@@ -126,6 +126,27 @@ pbm::SizeGrid read_size_grid(const CaseTable& t) {
   return pbm::SizeGrid(e, coord, k_v);
 }
 
+pbm::CollisionSpectrum read_collision_spectrum(const CaseTable& t, const std::string& key) {
+  const auto path = t.file_path(key);
+  const auto csv = CsvColumns::read(path, t.key_path(key));
+  pbm::CollisionSpectrum s{csv.column("energy_J"), csv.column("frequency_per_s")};
+  for (std::size_t r = 0; r < s.energy.size(); ++r)
+    if (!(s.energy[r] > 0) || s.frequency[r] < 0)
+      throw InputError(path.string(), t.key_path(key), csv.line_of_row(r),
+                       "energy_J must be positive and frequency_per_s not negative");
+  return s;
+}
+
+pbm::FractureEnergyModel read_fracture_energy(const CaseTable& t) {
+  pbm::FractureEnergyModel m;
+  m.e50_inf = t.number("e50_inf", Limits::positive());
+  m.d0 = t.number("d0", Limits::non_negative());
+  m.phi = t.number("phi", Limits::non_negative(), 1.0);
+  m.sigma = t.number("sigma", Limits::positive());
+  m.max_ratio = t.number("max_ratio", {1, 1e300, true, false}, 1e3);
+  return m;
+}
+
 std::unique_ptr<pbm::BreakageFunction> read_breakage(const CaseTable& b, const PbmContext& ctx) {
   const auto pops = b.tables("population");
   if (pops.empty()) return build_named<BreakageFunctionBuilders>(b, "function", ctx);

@@ -10,7 +10,9 @@
 #include "comminute/core/registry.hpp"
 #include "comminute/io/case_table.hpp"
 #include "comminute/pbm/breakage_function.hpp"
+#include "comminute/pbm/collision_spectrum.hpp"
 #include "comminute/pbm/critical_stress.hpp"
+#include "comminute/pbm/fracture_energy.hpp"
 #include "comminute/pbm/problem.hpp"
 #include "comminute/pbm/selection_function.hpp"
 
@@ -41,6 +43,10 @@ struct PbmOutput {
 };
 
 pbm::SizeGrid read_size_grid(const CaseTable& grid);
+// CSV named by `key` with columns energy_J, frequency_per_s.
+pbm::CollisionSpectrum read_collision_spectrum(const CaseTable& t, const std::string& key);
+// e50_inf (J/kg), d0 (m), phi, sigma, max_ratio.
+pbm::FractureEnergyModel read_fracture_energy(const CaseTable& t);
 // [breakage]: one function, or [[breakage.population]] tables split by parent size.
 std::unique_ptr<pbm::BreakageFunction> read_breakage(const CaseTable& breakage,
                                                      const PbmContext& ctx);

@@ -5,6 +5,7 @@
 #include "comminute/core/error.hpp"
 #include "comminute/io/csv_columns.hpp"
 #include "comminute/io/pbm_case.hpp"
+#include "comminute/pbm/energy_spectrum_rate.hpp"
 #include "comminute/pbm/power_law_rate.hpp"
 #include "comminute/pbm/stress_rate.hpp"
 
@@ -56,8 +57,37 @@ std::unique_ptr<pbm::SelectionFunction> stress(const CaseTable& t, const PbmCont
                                            CriticalStressBuilders::create(name, t));
 }
 
+// The skeleton S_i = (1/H) Σ λ_k m* P_i(η E_k/m*) with the model's probability.
+std::unique_ptr<pbm::SelectionFunction> energy_spectrum(
+    const CaseTable& t, std::unique_ptr<pbm::BreakageProbability> probability) {
+  return std::make_unique<pbm::EnergySpectrumRate>(
+      read_collision_spectrum(t, "spectrum_file"), t.number("holdup", Limits::positive()),
+      t.number("captured_mass", Limits::positive()),
+      t.number("energy_share", {0, 1, true, false}, 1.0), std::move(probability));
+}
+
+std::unique_ptr<pbm::BreakageProbability> vogel_peukert(const CaseTable& t, bool linearised) {
+  return std::make_unique<pbm::VogelPeukertProbability>(
+      t.number("f_mat", Limits::positive()), t.number("x_e_min", Limits::non_negative()),
+      linearised);
+}
+
+std::unique_ptr<pbm::SelectionFunction> capece(const CaseTable& t, const PbmContext&) {
+  return energy_spectrum(t, vogel_peukert(t, true));
+}
+std::unique_ptr<pbm::SelectionFunction> tuzcu_rajamani(const CaseTable& t, const PbmContext&) {
+  return energy_spectrum(t, vogel_peukert(t, false));
+}
+std::unique_ptr<pbm::SelectionFunction> datta_rajamani(const CaseTable& t, const PbmContext&) {
+  return energy_spectrum(
+      t, std::make_unique<pbm::FractureEnergyProbability>(read_fracture_energy(t)));
+}
+
 const bool registered = SelectionFunctionBuilders::add("power_law", &power_law) &&
                         SelectionFunctionBuilders::add("stress", &stress) &&
+                        SelectionFunctionBuilders::add("capece", &capece) &&
+                        SelectionFunctionBuilders::add("tuzcu_rajamani", &tuzcu_rajamani) &&
+                        SelectionFunctionBuilders::add("datta_rajamani", &datta_rajamani) &&
                         CriticalStressBuilders::add("power_law", &power_law_strength) &&
                         CriticalStressBuilders::add("sigma50", &sigma50_strength);
 

@@ -76,8 +76,9 @@ std::function<int()> setup_calibrate(CLI::App& sub) {
       best_f = std::min(best_f, s.f);
       const double el =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      fmt::print(stderr, "{}calibrate: {}/{} starts done, this start {:.4e} ({} evaluations), "
-                         "best {:.4e}, {:.1f} s{}",
+      fmt::print(stderr,
+                 "{}calibrate: {}/{} starts done, this start {:.4e} ({} evaluations), "
+                 "best {:.4e}, {:.1f} s{}",
                  tty ? "\r" : "", done, total, s.f, s.run.evaluations, best_f, el,
                  tty && done < total ? "" : "\n");
     };

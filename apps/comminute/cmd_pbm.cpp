@@ -33,7 +33,8 @@ std::function<int()> setup_pbm(CLI::App& sub) {
     write_distributions(out.directory / "distributions.csv", p, s.times, s.number);
     write_models(out.directory, p, s);
     const auto first = distribution(p, p.initial_number), last = distribution(p, s.number.back());
-    const double drift = last.total(analysis::Basis::volume) / first.total(analysis::Basis::volume) - 1;
+    const double drift =
+        last.total(analysis::Basis::volume) / first.total(analysis::Basis::volume) - 1;
     fmt::print("pbm: {} classes, {} output times to {} s in {:.2f} ms ({} steps, {} rejected)\n",
                p.grid.classes(), s.times.size(), s.times.back(), ms, s.stats.steps,
                s.stats.rejected);

@@ -54,8 +54,7 @@ void write_distributions(const std::filesystem::path& file, const pbm::Problem& 
   f.commit();
 }
 
-void write_models(const std::filesystem::path& dir, const pbm::Problem& p,
-                  const pbm::Solution& s) {
+void write_models(const std::filesystem::path& dir, const pbm::Problem& p, const pbm::Solution& s) {
   const auto& g = p.grid;
   {
     AtomicFile f(dir / "rates.csv");
@@ -80,10 +79,8 @@ void write_models(const std::filesystem::path& dir, const pbm::Problem& p,
 
 void plot(const std::string& kind, const std::filesystem::path& dir) {
   const char* env = std::getenv("COMMINUTE_PLOT_SCRIPT");
-  const std::string script =
-      env ? env : std::string(COMMINUTE_SOURCE_DIR) + "/scripts/plot_pbm.py";
-  const std::string cmd =
-      fmt::format("/usr/bin/python3 '{}' {} '{}'", script, kind, dir.string());
+  const std::string script = env ? env : std::string(COMMINUTE_SOURCE_DIR) + "/scripts/plot_pbm.py";
+  const std::string cmd = fmt::format("/usr/bin/python3 '{}' {} '{}'", script, kind, dir.string());
   if (std::system(cmd.c_str()) != 0)
     fmt::print(stderr, "warning: plotting failed ({}); the CSV files are complete\n", cmd);
 }

@@ -18,8 +18,7 @@ void write_distributions(const std::filesystem::path& file, const pbm::Problem& 
                          const std::vector<double>& times,
                          const std::vector<Eigen::VectorXd>& number);
 // rates.csv (S per class) and breakage_function.csv (B against d/D for a few parents).
-void write_models(const std::filesystem::path& dir, const pbm::Problem& p,
-                  const pbm::Solution& s);
+void write_models(const std::filesystem::path& dir, const pbm::Problem& p, const pbm::Solution& s);
 // Runs `/usr/bin/python3 scripts/plot_pbm.py <kind> <dir>`; warns (never throws) on failure.
 void plot(const std::string& kind, const std::filesystem::path& dir);
 

@@ -16,9 +16,12 @@ Basis basis_from_name(const std::string& name) {
 
 const char* basis_name(Basis b) {
   switch (b) {
-    case Basis::number: return "number";
-    case Basis::volume: return "volume";
-    default: return "mass";
+    case Basis::number:
+      return "number";
+    case Basis::volume:
+      return "volume";
+    default:
+      return "mass";
   }
 }
 

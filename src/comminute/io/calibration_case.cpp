@@ -56,7 +56,8 @@ void set_number(toml::table& doc, const std::string& key, double value) {
     arr->replace(arr->cbegin() + static_cast<long>(i), value);
     return;
   }
-  toml::table* parent = dot == std::string::npos ? &doc : toml::at_path(doc, key.substr(0, dot)).as_table();
+  toml::table* parent =
+      dot == std::string::npos ? &doc : toml::at_path(doc, key.substr(0, dot)).as_table();
   parent->insert_or_assign(key.substr(dot == std::string::npos ? 0 : dot + 1), value);
 }
 
@@ -85,11 +86,11 @@ std::vector<std::vector<double>> simulate(const DataSet& d, const std::vector<st
   for (std::size_t i = 0; i < p.grid.classes(); ++i) vol.push_back(p.grid.pivot_volume(i));
   std::vector<std::vector<double>> out;
   for (const auto& m : d.data) {
-    const auto k = static_cast<std::size_t>(std::find(times.begin(), times.end(), m.time) -
-                                            times.begin());
+    const auto k =
+        static_cast<std::size_t>(std::find(times.begin(), times.end(), m.time) - times.begin());
     const Eigen::VectorXd& n = s.number[k];
-    const analysis::SizeDistribution dist(edges, vol, std::vector<double>(n.data(), n.data() + n.size()),
-                                          p.density);
+    const analysis::SizeDistribution dist(
+        edges, vol, std::vector<double>(n.data(), n.data() + n.size()), p.density);
     std::vector<double> c;
     for (double x : m.sizes) c.push_back(dist.cumulative_at(x, m.basis));
     out.push_back(std::move(c));
@@ -112,9 +113,9 @@ Measurement read_measurement(const CaseTable& t, std::size_t index) {
       throw InputError(path.string(), t.key_path("file"), csv.line_of_row(r),
                        "size_m must be positive and increasing");
     if (m.passing[r] < 0 || m.passing[r] > 1)
-      throw InputError(path.string(), t.key_path("file"), csv.line_of_row(r),
-                       fmt::format("cumulative_passing {} is not a fraction in [0, 1]",
-                                   m.passing[r]));
+      throw InputError(
+          path.string(), t.key_path("file"), csv.line_of_row(r),
+          fmt::format("cumulative_passing {} is not a fraction in [0, 1]", m.passing[r]));
   }
   return m;
 }
@@ -126,13 +127,16 @@ CalibrationCase read_calibration(const CaseFile& file) {
   const CaseTable c = root.table("calibration");
   calibrate::MultiStartOptions o;
   o.starts = static_cast<std::size_t>(c.integer("starts", 1, 100000, 15));
-  o.seed = static_cast<std::uint64_t>(c.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
+  o.seed =
+      static_cast<std::uint64_t>(c.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
   o.threads = static_cast<int>(c.integer("threads", 0, 1024, 0));
   o.simplex_step = c.number("simplex_step", {0, 1, true, false}, 0.1);
   o.nelder_mead.x_tolerance = c.number("x_tolerance", Limits::positive(), 1e-4);
   o.nelder_mead.f_tolerance = c.number("f_tolerance", Limits::non_negative(), 1e-12);
-  o.nelder_mead.f_relative_tolerance = c.number("f_relative_tolerance", Limits::non_negative(), 1e-6);
-  o.nelder_mead.max_evaluations = static_cast<std::size_t>(c.integer("max_evaluations", 10, 10000000, 2000));
+  o.nelder_mead.f_relative_tolerance =
+      c.number("f_relative_tolerance", Limits::non_negative(), 1e-6);
+  o.nelder_mead.max_evaluations =
+      static_cast<std::size_t>(c.integer("max_evaluations", 10, 10000000, 2000));
 
   std::vector<std::string> keys;
   std::vector<calibrate::FreeParameter> params;
@@ -143,7 +147,8 @@ CalibrationCase read_calibration(const CaseFile& file) {
     p.name = t.string("key");
     p.lower = t.number("min");
     p.upper = t.number("max");
-    if (!(p.upper > p.lower)) t.fail("max", fmt::format("max ({}) must exceed min ({})", p.upper, p.lower));
+    if (!(p.upper > p.lower))
+      t.fail("max", fmt::format("max ({}) must exceed min ({})", p.upper, p.lower));
     const std::string scale = t.choice("scale", {"auto", "log", "linear"}, "auto");
     p.scale = scale == "log"      ? calibrate::Scale::log
               : scale == "linear" ? calibrate::Scale::linear
@@ -180,7 +185,8 @@ CalibrationCase read_calibration(const CaseFile& file) {
     for (const auto& d : sets) {
       auto n = toml::at_path(d.doc, keys[k]);
       if (!n || !(n.is_floating_point() || n.is_integer()))
-        ptabs[k].fail("key", fmt::format("'{}' is not a numeric key of {}", keys[k], d.path.string()));
+        ptabs[k].fail("key",
+                      fmt::format("'{}' is not a numeric key of {}", keys[k], d.path.string()));
       std::vector<double> base(params.size());
       for (std::size_t j = 0; j < params.size(); ++j)
         base[j] = toml::at_path(d.doc, keys[j]).value<double>().value_or(0.0);
@@ -220,8 +226,8 @@ CalibrationCase read_calibration(const CaseFile& file) {
       const auto sim = simulate(d, keys, v);
       for (std::size_t m = 0; m < d.data.size(); ++m)
         for (std::size_t j = 0; j < sim[m].size(); ++j)
-          out.push_back({d.data[m].index, d.data[m].time, d.data[m].sizes[j],
-                         d.data[m].passing[j], sim[m][j]});
+          out.push_back({d.data[m].index, d.data[m].time, d.data[m].sizes[j], d.data[m].passing[j],
+                         sim[m][j]});
     }
     return out;
   };

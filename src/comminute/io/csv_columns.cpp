@@ -55,9 +55,9 @@ CsvColumns CsvColumns::read(const std::filesystem::path& path, const std::string
       const auto* end = cells[k].data() + cells[k].size();
       const auto r = std::from_chars(cells[k].data(), end, v);
       if (r.ec != std::errc() || r.ptr != end || !std::isfinite(v))
-        throw InputError(path.string(), key, no,
-                         fmt::format("column '{}': '{}' is not a finite number", c.names_[k],
-                                     cells[k]));
+        throw InputError(
+            path.string(), key, no,
+            fmt::format("column '{}': '{}' is not a finite number", c.names_[k], cells[k]));
       row.push_back(v);
     }
     c.rows_.push_back(std::move(row));
@@ -75,9 +75,9 @@ bool CsvColumns::has(const std::string& name) const {
 std::vector<double> CsvColumns::column(const std::string& name) const {
   const auto it = std::find(names_.begin(), names_.end(), name);
   if (it == names_.end())
-    throw InputError(path_.string(), key_, header_line_,
-                     fmt::format("missing column '{}' (header has: {})", name,
-                                 fmt::join(names_, ", ")));
+    throw InputError(
+        path_.string(), key_, header_line_,
+        fmt::format("missing column '{}' (header has: {})", name, fmt::join(names_, ", ")));
   const auto k = static_cast<std::size_t>(it - names_.begin());
   std::vector<double> out;
   for (const auto& r : rows_) out.push_back(r[k]);

@@ -54,7 +54,8 @@ std::unique_ptr<pbm::BreakageFunction> tabulated(const CaseTable& t, const PbmCo
 
 std::array<double, 5> five(const CaseTable& t, const std::string& key) {
   const auto v = t.numbers(key, Limits::positive());
-  if (v.size() != 5) t.fail(key, fmt::format("give 5 values (n = 2, 4, 25, 50, 75), got {}", v.size()));
+  if (v.size() != 5)
+    t.fail(key, fmt::format("give 5 values (n = 2, 4, 25, 50, 75), got {}", v.size()));
   return {v[0], v[1], v[2], v[3], v[4]};
 }
 

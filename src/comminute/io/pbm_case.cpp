@@ -2,8 +2,8 @@
 
 #include <fmt/format.h>
 
-#include <boost/math/special_functions/erf.hpp>
 #include <algorithm>
+#include <boost/math/special_functions/erf.hpp>
 #include <cmath>
 
 #include "comminute/core/error.hpp"
@@ -31,8 +31,8 @@ std::vector<double> from_cumulative(const pbm::SizeGrid& g, const std::vector<do
   auto at = [&](double d) {
     if (d <= sizes.front()) return passing.front() * (sizes.front() > 0 ? 0.0 : 1.0);
     if (d >= sizes.back()) return passing.back();
-    const auto i = static_cast<std::size_t>(
-        std::upper_bound(sizes.begin(), sizes.end(), d) - sizes.begin() - 1);
+    const auto i = static_cast<std::size_t>(std::upper_bound(sizes.begin(), sizes.end(), d) -
+                                            sizes.begin() - 1);
     const double w = sizes[i] > 0 ? std::log(d / sizes[i]) / std::log(sizes[i + 1] / sizes[i])
                                   : d / sizes[i + 1];
     return passing[i] + w * (passing[i + 1] - passing[i]);
@@ -54,7 +54,8 @@ std::vector<double> initial_fractions(const CaseTable& t, const pbm::SizeGrid& g
   if (kind == "fractions") {
     f = t.numbers("fractions", Limits::non_negative());
     if (f.size() != n)
-      t.fail("fractions", fmt::format("{} values given for {} classes (fine to coarse)", f.size(), n));
+      t.fail("fractions",
+             fmt::format("{} values given for {} classes (fine to coarse)", f.size(), n));
     double sum = 0;
     for (double x : f) sum += x;
     // 1e−6: six decimals is what measured distributions are typed with.
@@ -73,7 +74,8 @@ std::vector<double> initial_fractions(const CaseTable& t, const pbm::SizeGrid& g
     const double median = t.number("median", Limits::positive());
     const double sigma = t.number("sigma", Limits::positive());
     auto cdf = [&](double d) {
-      return d <= 0 ? 0.0 : 0.5 * boost::math::erfc(-std::log(d / median) / (sigma * std::sqrt(2.0)));
+      return d <= 0 ? 0.0
+                    : 0.5 * boost::math::erfc(-std::log(d / median) / (sigma * std::sqrt(2.0)));
     };
     double sum = 0;
     for (std::size_t i = 0; i < n; ++i) sum += f[i] = cdf(g.size_edge(i + 1)) - cdf(g.size_edge(i));
@@ -171,8 +173,8 @@ std::unique_ptr<pbm::BreakageFunction> read_breakage(const CaseTable& b, const P
 
 pbm::Problem read_pbm_problem(const CaseTable& root) {
   const auto material = root.optional_table("material");
-  const double density = material ? material->number("density", Limits::positive(), 1000.0)
-                                  : 1000.0;
+  const double density =
+      material ? material->number("density", Limits::positive(), 1000.0) : 1000.0;
   pbm::Problem p(read_size_grid(root.table("grid")));
   p.density = density;
   const PbmContext ctx{p.grid, density};

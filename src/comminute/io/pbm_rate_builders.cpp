@@ -26,9 +26,9 @@ std::unique_ptr<pbm::SelectionFunction> power_law(const CaseTable& t, const PbmC
 }
 
 std::unique_ptr<pbm::CriticalStress> power_law_strength(const CaseTable& t) {
-  return std::make_unique<pbm::PowerLawStrength>(t.number("sigma0", Limits::positive()),
-                                                 t.number("m", Limits::positive()),
-                                                 t.number("reference_size", Limits::positive(), 1.0));
+  return std::make_unique<pbm::PowerLawStrength>(
+      t.number("sigma0", Limits::positive()), t.number("m", Limits::positive()),
+      t.number("reference_size", Limits::positive(), 1.0));
 }
 
 std::unique_ptr<pbm::CriticalStress> sigma50_strength(const CaseTable& t) {
@@ -67,9 +67,9 @@ std::unique_ptr<pbm::SelectionFunction> energy_spectrum(
 }
 
 std::unique_ptr<pbm::BreakageProbability> vogel_peukert(const CaseTable& t, bool linearised) {
-  return std::make_unique<pbm::VogelPeukertProbability>(
-      t.number("f_mat", Limits::positive()), t.number("x_e_min", Limits::non_negative()),
-      linearised);
+  return std::make_unique<pbm::VogelPeukertProbability>(t.number("f_mat", Limits::positive()),
+                                                        t.number("x_e_min", Limits::non_negative()),
+                                                        linearised);
 }
 
 std::unique_ptr<pbm::SelectionFunction> capece(const CaseTable& t, const PbmContext&) {
@@ -79,8 +79,8 @@ std::unique_ptr<pbm::SelectionFunction> tuzcu_rajamani(const CaseTable& t, const
   return energy_spectrum(t, vogel_peukert(t, false));
 }
 std::unique_ptr<pbm::SelectionFunction> datta_rajamani(const CaseTable& t, const PbmContext&) {
-  return energy_spectrum(
-      t, std::make_unique<pbm::FractureEnergyProbability>(read_fracture_energy(t)));
+  return energy_spectrum(t,
+                         std::make_unique<pbm::FractureEnergyProbability>(read_fracture_energy(t)));
 }
 
 const bool registered = SelectionFunctionBuilders::add("power_law", &power_law) &&

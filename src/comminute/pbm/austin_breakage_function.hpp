@@ -21,6 +21,7 @@ class AustinBreakageFunction : public BreakageFunction {
 
   double phi_of_parent(double parent_size) const;
   double cumulative_mass(double v, double y) const override;
+  bool homogeneous() const override { return p_.delta == 0.0; }
 
  private:
   Parameters p_;

@@ -16,6 +16,11 @@ class BreakageFunction {
   virtual std::optional<double> cumulative_number(double /*v*/, double /*y*/) const {
     return std::nullopt;
   }
+  // True when B depends on v/y only (a "normalised" function): then on a grid geometric in
+  // volume the method of classes evaluates it n times instead of n²/2.
+  virtual bool homogeneous() const { return false; }
+  // The function that breaks a parent of volume y (itself, except for population splits).
+  virtual const BreakageFunction& of_parent(double /*y*/) const { return *this; }
 };
 
 }  // namespace comminute::pbm

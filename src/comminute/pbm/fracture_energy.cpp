@@ -6,7 +6,9 @@
 namespace comminute::pbm {
 
 // Tavares (seed 002 eq. 12): E50(d) = E∞ [1 + (d0/d)^φ].
-double FractureEnergyModel::e50(double d) const { return e50_inf * (1 + std::pow(d0 / d, phi)); }
+double FractureEnergyModel::e50(double d) const {
+  return e50_inf * (1 + std::pow(d0 / d, phi));
+}
 
 // Tavares (seed 002 eq. 10–11): upper-truncated lognormal.
 double FractureEnergyModel::cdf(double energy, double d) const {

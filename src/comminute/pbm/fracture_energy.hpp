@@ -6,11 +6,11 @@
 namespace comminute::pbm {
 
 struct FractureEnergyModel {
-  double e50_inf = 100;   // E∞, J/kg
-  double d0 = 1e-3;       // m
-  double phi = 1.0;       // φ
-  double sigma = 0.8;     // σ of ln E*
-  double max_ratio = 1e3; // E_max/E50 (→ ∞: plain lognormal)
+  double e50_inf = 100;    // E∞, J/kg
+  double d0 = 1e-3;        // m
+  double phi = 1.0;        // φ
+  double sigma = 0.8;      // σ of ln E*
+  double max_ratio = 1e3;  // E_max/E50 (→ ∞: plain lognormal)
 
   double e50(double d) const;
   // F(E) for particles of size d: the fraction with fracture energy below E.

@@ -1,5 +1,7 @@
 #include "comminute/pbm/method_of_classes.hpp"
 
+#include <map>
+
 namespace comminute::pbm {
 
 MethodOfClasses::MethodOfClasses(const SizeGrid& grid, const SelectionFunction& rate,
@@ -12,19 +14,38 @@ MethodOfClasses::MethodOfClasses(const SizeGrid& grid, const SelectionFunction& 
   wd_.assign(n, 1.0);
   b_ = Eigen::MatrixXd::Zero(ni, ni);
   a_ = Eigen::MatrixXd::Zero(ni, ni);
+  std::map<const BreakageFunction*, std::vector<double>> tables;  // see below
   for (std::size_t k = 0; k < n; ++k) {
     const double y = grid.pivot_volume(k);
     s_[k] = rate.rate(grid.pivot_size(k), y);
-    const bool by_number = function.cumulative_number(y, y).has_value();
+    const BreakageFunction& fk = function.of_parent(y);
+    const bool by_number = fk.cumulative_number(y, y).has_value();
+    auto cumulative = [&](double v, double parent) {
+      return by_number ? *fk.cumulative_number(v, parent) : fk.cumulative_mass(v, parent);
+    };
+    // Cumulative at the edges below the pivot and at the pivot. On a grid geometric in volume a
+    // homogeneous function has edge_i/x_k = edge_{i+n−1−k}/x_{n−1}, so one table per function
+    // (relative to the coarsest pivot) serves every parent.
+    std::vector<double> upper(k + 1);
+    if (grid.geometric_in_volume() && fk.homogeneous()) {
+      auto [it, fresh] = tables.try_emplace(&fk);
+      if (fresh) {
+        const double top = grid.pivot_volume(n - 1);
+        for (std::size_t j = 1; j < n; ++j)
+          it->second.push_back(cumulative(grid.volume_edge(j), top));
+        it->second.push_back(cumulative(top, top));
+      }
+      for (std::size_t i = 0; i < k; ++i) upper[i] = it->second[i + n - 1 - k];
+      upper[k] = it->second.back();
+    } else {
+      for (std::size_t i = 0; i <= k; ++i)
+        upper[i] = cumulative(i == k ? y : grid.volume_edge(i + 1), y);
+    }
+    double below = 0;  // everything under the grid falls into the finest class
     for (std::size_t i = 0; i <= k; ++i) {
-      const double lo = i == 0 ? 0.0 : grid.volume_edge(i);
-      const double hi = i == k ? y : grid.volume_edge(i + 1);
-      double bik = 0;
-      if (by_number)
-        bik = *function.cumulative_number(hi, y) - *function.cumulative_number(lo, y);
-      else
-        bik = y * (function.cumulative_mass(hi, y) - function.cumulative_mass(lo, y)) /
-              grid.pivot_volume(i);
+      double bik = upper[i] - below;
+      below = upper[i];
+      if (!by_number) bik *= y / grid.pivot_volume(i);
       b_(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = bik;
       nu_[k] += bik;
     }

@@ -32,6 +32,7 @@ class MethodOfClasses {
   const std::vector<double>& birth_weights() const { return wb_; }
   const std::vector<double>& death_weights() const { return wd_; }
   const Eigen::MatrixXd& birth_matrix() const { return b_; }  // B_{i,k}
+  const Eigen::MatrixXd& matrix() const { return a_; }        // dN/dt = A N
 
  private:
   std::vector<double> s_, nu_, wb_, wd_;

@@ -17,7 +17,7 @@ class PopulationSplit : public BreakageFunction {
   };
   explicit PopulationSplit(std::vector<Population> populations);
 
-  const BreakageFunction& of_parent(double y) const;
+  const BreakageFunction& of_parent(double y) const override;
   double cumulative_mass(double v, double y) const override;
   std::optional<double> cumulative_number(double v, double y) const override;
 

@@ -25,14 +25,14 @@ struct TimeIntegration {
 struct Problem {
   explicit Problem(SizeGrid g) : grid(std::move(g)) {}
   SizeGrid grid;
-  double density = 1000;          // kg/m³
-  Eigen::VectorXd initial_number; // particles per class
+  double density = 1000;           // kg/m³
+  Eigen::VectorXd initial_number;  // particles per class
   std::shared_ptr<const SelectionFunction> rate;
   std::shared_ptr<const BreakageFunction> function;
   Method method = Method::classes;
   bool kumar_correction = true;
   TimeIntegration integration{};
-  std::vector<double> times;      // s, non-decreasing
+  std::vector<double> times;  // s, non-decreasing
 };
 
 struct Solution {

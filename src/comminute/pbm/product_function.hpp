@@ -20,6 +20,7 @@ class ProductFunction : public BreakageFunction {
   double z50_volume() const;
 
   double cumulative_mass(double v, double y) const override;
+  bool homogeneous() const override { return true; }
   std::optional<double> cumulative_number(double v, double y) const override;
 
  private:

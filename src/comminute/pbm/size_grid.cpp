@@ -22,6 +22,12 @@ SizeGrid::SizeGrid(std::vector<double> edges, GridCoordinate coordinate, double 
     for (double& e : volume_edges_) e = volume_of_size(e);
   for (std::size_t i = 0; i + 1 < volume_edges_.size(); ++i)
     pivot_volume_.push_back(0.5 * (volume_edges_[i] + volume_edges_[i + 1]));
+  // 1e−12: exp/pow round-off of generated edges is ~1e−15; user sieve series typed with 4–6
+  // digits are treated as general grids.
+  geometric_ = volume_edges_.front() > 0;
+  const double r = volume_edges_[1] / volume_edges_[0];
+  for (std::size_t i = 1; geometric_ && i + 1 < volume_edges_.size(); ++i)
+    geometric_ = std::abs(volume_edges_[i + 1] / volume_edges_[i] / r - 1) < 1e-12;
 }
 
 SizeGrid SizeGrid::logarithmic(double lo, double hi, std::size_t classes, GridCoordinate coordinate,

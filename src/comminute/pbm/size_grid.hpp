@@ -35,12 +35,16 @@ class SizeGrid {
   double volume_width(std::size_t i) const { return volume_edges_[i + 1] - volume_edges_[i]; }
   const std::vector<double>& volume_edges() const { return volume_edges_; }
 
+  // Edges in constant ratio in volume (logarithmic and geometric grids, in size or volume).
+  bool geometric_in_volume() const { return geometric_; }
+
   double volume_of_size(double d) const { return shape_factor_ * d * d * d; }
   double size_of_volume(double v) const;
 
  private:
   double shape_factor_;
   std::vector<double> volume_edges_, pivot_volume_;
+  bool geometric_ = false;
 };
 
 }  // namespace comminute::pbm

@@ -10,6 +10,7 @@ class TabulatedBreakageFunction : public BreakageFunction {
  public:
   explicit TabulatedBreakageFunction(CumulativeTable table) : table_(std::move(table)) {}
   double cumulative_mass(double v, double y) const override;
+  bool homogeneous() const override { return true; }
 
  private:
   CumulativeTable table_;

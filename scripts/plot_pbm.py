@@ -6,6 +6,7 @@ usage: plot_pbm.py pbm DIR        -> DIR/distributions.png, DIR/models.png
 """
 import csv
 import math
+import os
 import sys
 
 import matplotlib
@@ -69,6 +70,22 @@ def plot_pbm(d):
         a.grid(True, which="both", alpha=0.3)
     fig.tight_layout()
     fig.savefig(f"{d}/models.png", dpi=120)
+
+    if os.path.exists(f"{d}/fracture_energy.csv"):  # UFRJ: weakening by damage
+        fe = read(f"{d}/fracture_energy.csv")
+        fig, ax = plt.subplots(figsize=(7, 4.2))
+        groups = by(fe, "time_s")
+        for n, (time, idx) in enumerate(sorted(groups.items())):
+            ax.plot([fe["size_pivot_m"][i] * 1e6 for i in idx],
+                    [fe["median_fracture_energy_J_per_kg"][i] for i in idx],
+                    color=cmap(n / max(1, len(groups) - 1)), label=f"{time:g} s")
+        ax.set(xscale="log", yscale="log", xlabel="particle size (µm)",
+               ylabel="median fracture energy (J/kg)",
+               title="Fracture energy of the unbroken material")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(title="time", fontsize=8)
+        fig.tight_layout()
+        fig.savefig(f"{d}/fracture_energy.png", dpi=120)
 
 
 def plot_calibrate(d):

@@ -66,15 +66,31 @@ void write_models(const std::filesystem::path& dir, const pbm::Problem& p, const
   AtomicFile f(dir / "breakage_function.csv");
   f.stream() << "parent_size_m,size_ratio,cumulative_mass_passing\n";
   const std::size_t n = g.classes();
+  std::size_t dominant = 0;  // UFRJ: progeny at the energy class carrying most collision energy
+  if (p.mill) {
+    const auto& sp = p.mill_spectrum;
+    for (std::size_t k = 1; k < sp.energy.size(); ++k)
+      if (sp.energy[k] * sp.frequency[k] > sp.energy[dominant] * sp.frequency[dominant])
+        dominant = k;
+  }
   for (std::size_t k : {n - 1, n / 2, n / 4}) {
     const double y = g.pivot_volume(k);
     for (int j = 0; j <= 120; ++j) {
       const double r = std::pow(10.0, -4.0 + 4.0 * j / 120.0);  // d/D from 1e-4 to 1
-      f.stream() << fmt::format("{:.9g},{:.9g},{:.9g}\n", g.pivot_size(k), r,
-                                p.function->cumulative_mass(y * r * r * r, y));
+      const double b = p.mill ? p.mill->progeny(k, dominant).passing(r)
+                              : p.function->cumulative_mass(y * r * r * r, y);
+      f.stream() << fmt::format("{:.9g},{:.9g},{:.9g}\n", g.pivot_size(k), r, b);
     }
   }
   f.commit();
+  if (s.median_fracture_energy.empty()) return;
+  AtomicFile fe(dir / "fracture_energy.csv");
+  fe.stream() << "time_s,class,size_pivot_m,median_fracture_energy_J_per_kg\n";
+  for (std::size_t t = 0; t < s.times.size(); ++t)
+    for (std::size_t i = 0; i < n; ++i)
+      fe.stream() << fmt::format("{:.9g},{},{:.9g},{:.9g}\n", s.times[t], i, g.pivot_size(i),
+                                 s.median_fracture_energy[t][static_cast<Eigen::Index>(i)]);
+  fe.commit();
 }
 
 void plot(const std::string& kind, const std::filesystem::path& dir) {

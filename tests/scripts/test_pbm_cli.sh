@@ -17,7 +17,7 @@ check() {  # check <description> <condition...>
 }
 
 # --- the examples run, conserve mass and write complete CSV files (plots skipped: speed)
-for c in batch_grinding carbon_black ball_mill_spectrum; do
+for c in batch_grinding carbon_black ball_mill_spectrum ball_mill_ufrj; do
   out=$("$bin" pbm --no-plots $c.toml 2>&1)
   rc=$?
   check "$c runs (rc $rc)" test $rc -eq 0

@@ -4,6 +4,10 @@
 #include <omp.h>
 
 namespace comminute {
-inline int max_threads() { return omp_get_max_threads(); }
-inline int thread_id() { return omp_get_thread_num(); }
+inline int max_threads() {
+  return omp_get_max_threads();
+}
+inline int thread_id() {
+  return omp_get_thread_num();
+}
 }  // namespace comminute

@@ -9,6 +9,7 @@
 #include "comminute/core/error.hpp"
 #include "comminute/io/csv_columns.hpp"
 #include "comminute/pbm/population_split.hpp"
+#include "comminute/pbm/ufrj_mill.hpp"
 
 namespace comminute::io {
 
@@ -171,6 +172,35 @@ std::unique_ptr<pbm::BreakageFunction> read_breakage(const CaseTable& b, const P
   return std::make_unique<pbm::PopulationSplit>(std::move(out));
 }
 
+namespace {
+std::pair<std::shared_ptr<const pbm::UfrjMill>, pbm::CollisionSpectrum> read_ufrj_mill(
+    const CaseTable& t, const PbmContext& ctx) {
+  pbm::UfrjParameters u;
+  u.spectrum = read_collision_spectrum(t, "spectrum_file");
+  u.holdup = t.number("holdup", Limits::positive());
+  u.energy_share = t.number("energy_share", {0, 1, true, false}, 1.0);
+  if (t.has("capture_radius"))
+    u.capture_radius = t.number("capture_radius", Limits::positive());
+  else
+    u.ball_radius = 0.5 * t.number("ball_diameter", Limits::positive());
+  u.fracture = read_fracture_energy(t.table("fracture_energy"));
+  u.damage_gamma = t.number("damage_gamma", Limits::positive(), 5.0);
+  u.energy_bins = static_cast<std::size_t>(t.integer("energy_bins", 4, 10000, 60));
+  const CaseTable pr = t.table("progeny");
+  u.t10_A = pr.number("A", {0, 100, true, false});
+  u.t10_b = pr.number("b", Limits::positive());
+  for (const char* key : {"alpha", "beta"}) {
+    const auto v = pr.numbers(key, Limits::positive());
+    if (v.size() != 5)
+      pr.fail(key, fmt::format("give 5 values (n = 2, 4, 25, 50, 75), got {}", v.size()));
+    std::copy(v.begin(), v.end(), (key[0] == 'a' ? u.family.alpha : u.family.beta).begin());
+  }
+  auto spectrum = u.spectrum;
+  return {std::make_shared<pbm::UfrjMill>(ctx.grid, ctx.density, std::move(u)),
+          std::move(spectrum)};
+}
+}  // namespace
+
 pbm::Problem read_pbm_problem(const CaseTable& root) {
   const auto material = root.optional_table("material");
   const double density =
@@ -190,13 +220,19 @@ pbm::Problem read_pbm_problem(const CaseTable& root) {
     p.initial_number[static_cast<Eigen::Index>(i)] = total * f[i] / per_particle;
   }
 
-  p.rate = build_named<SelectionFunctionBuilders>(root.table("rate"), "model", ctx);
-  p.function = read_breakage(root.table("breakage"), ctx);
-
   const CaseTable s = root.table("solver");
-  p.method = s.choice("method", {"classes", "batch_grinding"}, "classes") == "classes"
-                 ? pbm::Method::classes
-                 : pbm::Method::batch_grinding;
+  const std::string method = s.choice("method", {"classes", "batch_grinding", "ufrj"}, "classes");
+  p.method = method == "classes"          ? pbm::Method::classes
+             : method == "batch_grinding" ? pbm::Method::batch_grinding
+                                          : pbm::Method::ufrj;
+  if (p.method == pbm::Method::ufrj) {
+    auto [mill, spectrum] = read_ufrj_mill(root.table("mill"), ctx);
+    p.mill = std::move(mill);
+    p.mill_spectrum = std::move(spectrum);
+  } else {
+    p.rate = build_named<SelectionFunctionBuilders>(root.table("rate"), "model", ctx);
+    p.function = read_breakage(root.table("breakage"), ctx);
+  }
   p.kumar_correction = s.boolean("kumar_correction", true);
   if (!p.kumar_correction && p.method != pbm::Method::classes)
     s.fail("kumar_correction", "applies to method = \"classes\" only");

@@ -11,6 +11,20 @@ std::unique_ptr<Integrator> make_integrator(const TimeIntegration& t) {
   return std::make_unique<DormandPrince>(t.adaptive);
 }
 
+namespace {
+// Mass-based solvers: particles of class i have the pivot volume.
+Eigen::VectorXd mass_of(const Problem& p, Eigen::VectorXd n) {
+  for (Eigen::Index i = 0; i < n.size(); ++i)
+    n[i] *= p.density * p.grid.pivot_volume(static_cast<std::size_t>(i));
+  return n;
+}
+Eigen::VectorXd number_of(const Problem& p, Eigen::VectorXd m) {
+  for (Eigen::Index i = 0; i < m.size(); ++i)
+    m[i] /= p.density * p.grid.pivot_volume(static_cast<std::size_t>(i));
+  return m;
+}
+}  // namespace
+
 Solution solve(const Problem& p) {
   Solution s;
   s.times = p.times;
@@ -20,19 +34,23 @@ Solution solve(const Problem& p) {
     s.rates = moc.rates();
     for (std::size_t i = 0; i < p.grid.classes(); ++i) s.rate_sizes.push_back(p.grid.pivot_size(i));
     s.number = solve(moc.system(), *integrator, p.initial_number, p.times);
+  } else if (p.method == Method::ufrj) {
+    s.rates = p.mill->virgin_rates();
+    for (std::size_t i = 0; i < p.grid.classes(); ++i) s.rate_sizes.push_back(p.grid.pivot_size(i));
+    const auto states =
+        solve(*p.mill, *integrator, p.mill->initial_state(mass_of(p, p.initial_number)), p.times);
+    for (const auto& st : states) {
+      s.number.push_back(number_of(p, p.mill->class_mass(st)));
+      s.median_fracture_energy.push_back(p.mill->median_fracture_energy(st));
+    }
   } else {
     // Austin's balance is in mass; particles of class i have the pivot volume.
     const BatchGrinding mill = BatchGrinding::from_models(p.grid, *p.rate, *p.function);
     s.rates = mill.rates();
     for (std::size_t i = 0; i < p.grid.classes(); ++i)
       s.rate_sizes.push_back(p.grid.size_edge(i + 1));  // Austin: S_i at the upper size
-    Eigen::VectorXd m0 = p.initial_number;
-    for (Eigen::Index i = 0; i < m0.size(); ++i)
-      m0[i] *= p.grid.pivot_volume(static_cast<std::size_t>(i));
-    s.number = solve(mill.system(), *integrator, m0, p.times);
-    for (auto& y : s.number)
-      for (Eigen::Index i = 0; i < y.size(); ++i)
-        y[i] /= p.grid.pivot_volume(static_cast<std::size_t>(i));
+    for (const auto& m : solve(mill.system(), *integrator, mass_of(p, p.initial_number), p.times))
+      s.number.push_back(number_of(p, m));
   }
   s.stats = integrator->stats();
   return s;

@@ -10,10 +10,11 @@
 #include "comminute/pbm/integrator.hpp"
 #include "comminute/pbm/selection_function.hpp"
 #include "comminute/pbm/size_grid.hpp"
+#include "comminute/pbm/ufrj_mill.hpp"
 
 namespace comminute::pbm {
 
-enum class Method { classes, batch_grinding };
+enum class Method { classes, batch_grinding, ufrj };
 enum class Scheme { rk4, adaptive };
 
 struct TimeIntegration {
@@ -28,7 +29,9 @@ struct Problem {
   double density = 1000;           // kg/m³
   Eigen::VectorXd initial_number;  // particles per class
   std::shared_ptr<const SelectionFunction> rate;
-  std::shared_ptr<const BreakageFunction> function;
+  std::shared_ptr<const BreakageFunction> function;  // classes, batch_grinding
+  std::shared_ptr<const UfrjMill> mill;              // ufrj
+  CollisionSpectrum mill_spectrum;                   // ufrj, for reports
   Method method = Method::classes;
   bool kumar_correction = true;
   TimeIntegration integration{};
@@ -41,6 +44,7 @@ struct Solution {
   std::vector<double> rates;            // S_i used (1/s)
   std::vector<double> rate_sizes;       // size (m) each S_i was evaluated at
   IntegratorStats stats;
+  std::vector<Eigen::VectorXd> median_fracture_energy;  // J/kg per class (ufrj only)
 };
 
 std::unique_ptr<Integrator> make_integrator(const TimeIntegration& t);

@@ -43,7 +43,7 @@ UfrjMill::UfrjMill(const SizeGrid& grid, double density, UfrjParameters p)
         // survivors sit at the geometric centre of their part of the bin, then are damaged
         const double lo_s = std::max(lo, std::min(r, hi));
         const double eps = f < 1 ? std::sqrt(lo_s * hi) : hi;
-        const double eps_d = eps * (1 - damage(p_.damage_gamma, r / eps));
+        const double eps_d = f < 1 ? eps * (1 - damage(p_.damage_gamma, r / eps)) : eps;
         const double pos = (std::log(eps_d) - ln_lo_) / ln_step_ - 0.5;  // in bin-centre units
         const double c = std::clamp(pos, 0.0, static_cast<double>(m_ - 1));
         const auto b = std::min(static_cast<std::size_t>(c), m_ - 2);

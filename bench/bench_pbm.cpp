@@ -58,6 +58,20 @@ void BM_Pbm200Classes_Adaptive120s(benchmark::State& st) {
 }
 BENCHMARK(BM_Pbm200Classes_Adaptive120s)->Unit(benchmark::kMillisecond);
 
+// For comparison: the carbon-black study's fixed RK4 step Δt = 0.1 s (1200 steps).
+void BM_Pbm200Classes_Rk4Step0p1To120s(benchmark::State& st) {
+  const Case200 c;
+  const pbm::MethodOfClasses moc(c.grid, c.rate, c.function, true);
+  const auto sys = moc.system();
+  const Eigen::VectorXd n0 = c.n0();
+  for (auto _ : st) {
+    pbm::Rk4 rk4(0.1);
+    auto sol = pbm::solve(sys, rk4, n0, {120.0});
+    benchmark::DoNotOptimize(sol.back().data());
+  }
+}
+BENCHMARK(BM_Pbm200Classes_Rk4Step0p1To120s)->Unit(benchmark::kMillisecond);
+
 void BM_Pbm200Classes_BuildAndAdaptive120s(benchmark::State& st) {
   const Case200 c;
   const Eigen::VectorXd n0 = c.n0();

@@ -40,6 +40,8 @@ std::function<int()> setup_pbm(CLI::App& sub) {
                s.stats.rejected);
     fmt::print("pbm: relative change of total mass {:.3e}; particles {:.6g} -> {:.6g}\n", drift,
                first.total(analysis::Basis::number), last.total(analysis::Basis::number));
+    if (p.function && !p.function->summary().empty())
+      fmt::print("pbm: breakage function: {}\n", p.function->summary());
     fmt::print("pbm: wrote {}\n", (out.directory / "distributions.csv").string());
     if (out.plots && !*no_plots) plot("pbm", out.directory);
     return 0;

@@ -82,4 +82,24 @@ rc=$?
 check "calibrate with a bound the model rejects: exit 2 (got $rc)" test $rc -eq 2
 check "calibrate names the parameter bound ($out)" grep -qF "key 'calibration.parameter[1].min': the model rejects this bound" <<<"$out"
 
+# --- calibrate runs: a short run (2 starts) over two data sets, one on another case with a
+# coarser feed that shares the free keys; every start is reported and the fit is written
+sed -e '/^\[calibration\]/,$d' -e 's/^median = 6e-4/median = 8e-4/' calibrate_carbon_black.toml > other.toml
+sed -e 's/^starts = 15/starts = 2/' -e 's/^max_evaluations = 600 .*/max_evaluations = 40/' \
+    -e 's/^directory = "calibrate_carbon_black_out"/directory = "short_out"/' calibrate_carbon_black.toml > short.toml
+printf '\n[[calibration.data]]\nfile = "measured_60s.csv"\ntime = 60.0\ncase = "other.toml"\n' >> short.toml
+out=$("$bin" calibrate --no-plots short.toml 2>&1)
+rc=$?
+check "short calibration runs (rc $rc)" test $rc -eq 0
+check "progress line per start" test "$(grep -c 'starts done' <<<"$out")" -eq 2
+check "starts.csv has a row per start" test "$(grep -vc '^start,' short_out/starts.csv)" -eq 2
+check "fit.csv covers all three data sets" test "$(cut -d, -f1 short_out/fit.csv | sort -u | grep -vc dataset)" -eq 3
+check "best_parameters.csv names the keys" grep -q '^rate.sigma_inf,' short_out/best_parameters.csv
+
+# --- a failing plot script warns and does not fail the run
+out=$(COMMINUTE_PLOT_SCRIPT=/nonexistent/plot.py "$bin" pbm batch_grinding.toml 2>&1)
+rc=$?
+check "plot failure is a warning (rc $rc)" test $rc -eq 0
+check "plot failure warning printed" grep -q 'warning: plotting failed' <<<"$out"
+
 exit $fail

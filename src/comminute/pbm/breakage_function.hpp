@@ -4,6 +4,7 @@
 // mass form B(v, y); functions defined by number (Diemer–Olson) also give the cumulative number
 // of fragments, which the method of classes integrates exactly over each class.
 #include <optional>
+#include <string>
 
 namespace comminute::pbm {
 
@@ -19,6 +20,8 @@ class BreakageFunction {
   // True when B depends on v/y only (a "normalised" function): then on a grid geometric in
   // volume the method of classes evaluates it n times instead of n²/2.
   virtual bool homogeneous() const { return false; }
+  // One line for run reports (the product function reports its z50 here); empty by default.
+  virtual std::string summary() const { return {}; }
   // The function that breaks a parent of volume y (itself, except for population splits).
   virtual const BreakageFunction& of_parent(double /*y*/) const { return *this; }
 };

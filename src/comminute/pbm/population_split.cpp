@@ -1,5 +1,7 @@
 #include "comminute/pbm/population_split.hpp"
 
+#include <fmt/format.h>
+
 #include "comminute/core/error.hpp"
 
 namespace comminute::pbm {
@@ -24,6 +26,23 @@ double PopulationSplit::cumulative_mass(double v, double y) const {
 
 std::optional<double> PopulationSplit::cumulative_number(double v, double y) const {
   return of_parent(y).cumulative_number(v, y);
+}
+
+}  // namespace comminute::pbm
+
+namespace comminute::pbm {
+
+std::string PopulationSplit::summary() const {
+  std::string out;
+  for (std::size_t i = 0; i < pops_.size(); ++i) {
+    const std::string s = pops_[i].function->summary();
+    if (s.empty()) continue;
+    if (!out.empty()) out += "\n";
+    out += i + 1 < pops_.size() ? fmt::format("population {} (parent volume < {:.4g} m3): {}", i,
+                                              pops_[i].upper_volume, s)
+                                : fmt::format("population {} (larger parents): {}", i, s);
+  }
+  return out;
 }
 
 }  // namespace comminute::pbm

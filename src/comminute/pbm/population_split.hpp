@@ -20,6 +20,7 @@ class PopulationSplit : public BreakageFunction {
   const BreakageFunction& of_parent(double y) const override;
   double cumulative_mass(double v, double y) const override;
   std::optional<double> cumulative_number(double v, double y) const override;
+  std::string summary() const override;  // one line per population
 
  private:
   std::vector<Population> pops_;

@@ -1,6 +1,8 @@
 #include "comminute/pbm/product_function.hpp"
 
+#include <fmt/format.h>
 #include <algorithm>
+
 #include <boost/math/special_functions/beta.hpp>
 #include <cmath>
 
@@ -34,6 +36,13 @@ double ProductFunction::z50_volume() const {
 }
 
 // ∫_0^z ζθ(ζ) dζ = I_z(q+1, r) (zθ is the Beta(q+1, r) density).
+std::string ProductFunction::summary() const {
+  return fmt::format(
+      "Diemer-Olson q = {:g}, nu = {:g}: z50 (number median) = {:.4g}, "
+      "z50 (volume median) = {:.4g}",
+      q_, nu_, z50_number(), z50_volume());
+}
+
 double ProductFunction::cumulative_mass(double v, double y) const {
   return bm::ibeta(q_ + 1, r_, ratio(v, y));
 }

@@ -21,6 +21,7 @@ class ProductFunction : public BreakageFunction {
 
   double cumulative_mass(double v, double y) const override;
   bool homogeneous() const override { return true; }
+  std::string summary() const override;  // q, ν and both z50
   std::optional<double> cumulative_number(double v, double y) const override;
 
  private:

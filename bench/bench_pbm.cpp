@@ -52,7 +52,7 @@ void BM_Pbm200Classes_Adaptive120s(benchmark::State& st) {
   const Eigen::VectorXd n0 = c.n0();
   std::size_t steps = 0;
   for (auto _ : st) {
-    pbm::DormandPrince dp({1e-6, 1e-12, 0, 0, 1000000});
+    pbm::DormandPrince dp({1e-6, 1e-12, 1000000});
     auto sol = pbm::solve(sys, dp, n0, {120.0});
     benchmark::DoNotOptimize(sol.back().data());
     steps = dp.stats().steps;
@@ -80,7 +80,7 @@ void BM_Pbm200Classes_BuildAndAdaptive120s(benchmark::State& st) {
   const Eigen::VectorXd n0 = c.n0();
   for (auto _ : st) {
     const pbm::MethodOfClasses moc(c.grid, c.rate, c.function, true);
-    pbm::DormandPrince dp({1e-6, 1e-12, 0, 0, 1000000});
+    pbm::DormandPrince dp({1e-6, 1e-12, 1000000});
     auto sol = pbm::solve(moc.system(), dp, n0, {120.0});
     benchmark::DoNotOptimize(sol.back().data());
   }

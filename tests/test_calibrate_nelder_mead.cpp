@@ -43,6 +43,36 @@ TEST(NelderMead, TighterTolerancesReachTheMinimum) {
   EXPECT_LT(r.f, 2e-18);
 }
 
+TEST(NelderMead, AdaptiveCoefficientsAlsoReachTheMinimum) {
+  // Gao & Han (2012) coefficients for n = 2: χ = 2, ψ = 0.5, σ = 0.5 — the standard ones, so
+  // the run must be the reference run; for n = 6 they differ (χ = 4/3, ψ = 2/3, σ = 5/6).
+  const auto o2 = NelderMeadOptions::adaptive(2);
+  EXPECT_EQ(o2.chi, 2.0);
+  EXPECT_EQ(o2.psi, 0.5);
+  EXPECT_EQ(o2.sigma, 0.5);
+  const auto o6 = NelderMeadOptions::adaptive(6);
+  EXPECT_NEAR(o6.chi, 4.0 / 3, 1e-15);
+  EXPECT_NEAR(o6.psi, 2.0 / 3, 1e-15);
+  EXPECT_NEAR(o6.sigma, 5.0 / 6, 1e-15);
+  // Ill-scaled 6-D quadratic Σ i·(x_i − i)², start 0: the adaptive variant reaches the
+  // minimum. Tolerance 1e−5 in x: a best vertex with f ≤ 1e−10 (the f-based stop) has
+  // |x_i − i| ≤ √(1e−10/i) ≤ 1e−5.
+  auto f = [](const Point& x) {
+    double s = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const double k = static_cast<double>(i + 1);
+      s += k * (x[i] - k) * (x[i] - k);
+    }
+    return s;
+  };
+  auto o = o6;
+  o.x_tolerance = o.f_tolerance = 1e-10;
+  o.max_evaluations = o.max_iterations = 20000;
+  const auto r = nelder_mead(f, fminsearch_simplex(Point(6, 0.0)), o);
+  ASSERT_TRUE(r.converged);
+  for (std::size_t i = 0; i < 6; ++i) EXPECT_NEAR(r.x[i], static_cast<double>(i + 1), 1e-5);
+}
+
 TEST(MultiStart, BoundsAreHonouredAndResultsRepeatFromTheSeed) {
   // Minimum of the shifted Rosenbrock at (3, 9) lies outside the box [−2, 2] × [0.01, 100]:
   // the best point must sit on the boundary x = 2 (the constrained minimum is at (2, 4)) and

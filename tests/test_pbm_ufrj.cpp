@@ -72,7 +72,7 @@ TEST(UfrjMill, ConservesMassAndDamageWeakensTheSurvivors) {
   m0[11] = 0.5;
   {
     const UfrjMill mill(g, 2700, params(5.0, 60));
-    DormandPrince dp({1e-8, 1e-14, 0, 0, 1000000});
+    DormandPrince dp({1e-8, 1e-14, 1000000});
     const auto st = solve(mill, dp, mill.initial_state(m0), {300.0});
     EXPECT_NEAR(mill.class_mass(st.back()).sum(), 0.5, 0.5e-12);
   }
@@ -88,7 +88,7 @@ TEST(UfrjMill, ConservesMassAndDamageWeakensTheSurvivors) {
     p.damage_gamma = d == 0 ? 2.0 : 1e6;
     const UfrjMill mill(g, 2700, p);
     virgin = mill.median_fracture_energy(mill.initial_state(m0))[11];
-    DormandPrince dp({1e-8, 1e-14, 0, 0, 1000000});
+    DormandPrince dp({1e-8, 1e-14, 1000000});
     const auto st = solve(mill, dp, mill.initial_state(m0), {3.0});
     med[d] = mill.median_fracture_energy(st.back())[11];
   }

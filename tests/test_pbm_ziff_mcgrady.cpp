@@ -93,7 +93,7 @@ Errors run(const Case& c, std::size_t n, double t, bool correction = true) {
       n0[static_cast<Eigen::Index>(i)] =
           std::exp(-g.volume_edge(i)) - std::exp(-g.volume_edge(i + 1));
   }
-  DormandPrince dp({1e-11, 1e-14, 0, 0, 1000000});
+  DormandPrince dp({1e-11, 1e-14, 1000000});
   const auto sol = solve(moc.system(), dp, n0, {t});
   const Eigen::VectorXd& nt = sol.back();
   double err = 0, ref = 0, m1_0 = 0, m1_t = 0;

@@ -14,17 +14,6 @@ Basis basis_from_name(const std::string& name) {
   throw Error("unknown basis '" + name + "' (number, volume, mass)");
 }
 
-const char* basis_name(Basis b) {
-  switch (b) {
-    case Basis::number:
-      return "number";
-    case Basis::volume:
-      return "volume";
-    default:
-      return "mass";
-  }
-}
-
 SizeDistribution::SizeDistribution(std::vector<double> size_edges,
                                    std::vector<double> particle_volume, std::vector<double> number,
                                    double density)

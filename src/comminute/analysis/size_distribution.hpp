@@ -10,7 +10,6 @@ namespace comminute::analysis {
 
 enum class Basis { number, volume, mass };
 Basis basis_from_name(const std::string& name);  // "number" | "volume" | "mass"
-const char* basis_name(Basis b);
 
 class SizeDistribution {
  public:

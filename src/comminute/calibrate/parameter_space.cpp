@@ -35,16 +35,6 @@ std::vector<double> ParameterSpace::to_parameters(const std::vector<double>& u) 
   return v;
 }
 
-std::vector<double> ParameterSpace::to_unit(const std::vector<double>& values) const {
-  std::vector<double> u(p_.size());
-  for (std::size_t i = 0; i < p_.size(); ++i) {
-    const auto& p = p_[i];
-    u[i] = p.scale == Scale::log ? std::log(values[i] / p.lower) / std::log(p.upper / p.lower)
-                                 : (values[i] - p.lower) / (p.upper - p.lower);
-  }
-  return u;
-}
-
 double ParameterSpace::outside2(const std::vector<double>& u) {
   double d = 0;
   for (double x : u) {

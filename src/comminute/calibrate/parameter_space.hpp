@@ -25,7 +25,6 @@ class ParameterSpace {
   const FreeParameter& operator[](std::size_t i) const { return p_[i]; }
   // u (clamped to [0, 1]) → parameter values.
   std::vector<double> to_parameters(const std::vector<double>& u) const;
-  std::vector<double> to_unit(const std::vector<double>& values) const;
   // Squared distance of u outside the unit box (0 inside).
   static double outside2(const std::vector<double>& u);
 

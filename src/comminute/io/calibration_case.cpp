@@ -131,6 +131,9 @@ CalibrationCase read_calibration(const CaseFile& file) {
       static_cast<std::uint64_t>(c.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
   o.threads = static_cast<int>(c.integer("threads", 0, 1024, 0));
   o.simplex_step = c.number("simplex_step", {0, 1, true, false}, 0.1);
+  if (c.boolean("adaptive", false))  // Gao & Han coefficients, for many parameters
+    o.nelder_mead = calibrate::NelderMeadOptions::adaptive(
+        static_cast<std::size_t>(c.tables("parameter").size()));
   o.nelder_mead.x_tolerance = c.number("x_tolerance", Limits::positive(), 1e-4);
   o.nelder_mead.f_tolerance = c.number("f_tolerance", Limits::non_negative(), 1e-12);
   o.nelder_mead.f_relative_tolerance =

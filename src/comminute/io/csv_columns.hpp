@@ -13,8 +13,6 @@ class CsvColumns {
   // `key` is the case-file key that named the file (for messages).
   static CsvColumns read(const std::filesystem::path& path, const std::string& key = "");
 
-  std::size_t rows() const { return rows_.size(); }
-  bool has(const std::string& name) const;
   std::vector<double> column(const std::string& name) const;  // throws when missing
   long line_of_row(std::size_t row) const { return lines_[row]; }
 

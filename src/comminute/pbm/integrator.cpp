@@ -62,7 +62,6 @@ void DormandPrince::advance(const OdeSystem& sys, double& t, double t_end, Eigen
     const double d0 = std::sqrt((y.array() / sc).square().mean());
     const double d1 = std::sqrt((k1.array() / sc).square().mean());
     h_ = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
-    if (o_.initial_step > 0) h_ = o_.initial_step;
   }
   auto &k2 = k_[1], &k3 = k_[2], &k4 = k_[3], &k5 = k_[4], &k6 = k_[5], &k7 = k_[6];
   while (t < t_end) {
@@ -70,7 +69,6 @@ void DormandPrince::advance(const OdeSystem& sys, double& t, double t_end, Eigen
       throw SimulationError(
           fmt::format("adaptive integrator: more than {} steps at t = {} s", o_.max_steps, t));
     double h = h_;
-    if (o_.max_step > 0) h = std::min(h, o_.max_step);
     const bool last = t + h >= t_end * (1 - 1e-14);
     if (last) h = t_end - t;
     tmp_ = y + h * a21 * k1;

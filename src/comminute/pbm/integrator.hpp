@@ -42,8 +42,6 @@ class DormandPrince : public Integrator {
   struct Options {
     double relative_tolerance = 1e-6;
     double absolute_tolerance = 1e-12;
-    double initial_step = 0;  // 0 = automatic guess
-    double max_step = 0;      // 0 = unlimited
     std::size_t max_steps = 1000000;
   };
   explicit DormandPrince(Options o) : o_(o) {}

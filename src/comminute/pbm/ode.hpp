@@ -21,7 +21,6 @@ class LinearOde : public OdeSystem {
   void derivative(double, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const override {
     dydt.noalias() = a_.triangularView<Eigen::Upper>() * y;
   }
-  const Eigen::MatrixXd& matrix() const { return a_; }
 
  private:
   Eigen::MatrixXd a_;

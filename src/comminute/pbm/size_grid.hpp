@@ -33,7 +33,6 @@ class SizeGrid {
   double pivot_volume(std::size_t i) const { return pivot_volume_[i]; }
   double pivot_size(std::size_t i) const { return size_of_volume(pivot_volume_[i]); }
   double volume_width(std::size_t i) const { return volume_edges_[i + 1] - volume_edges_[i]; }
-  const std::vector<double>& volume_edges() const { return volume_edges_; }
 
   // Edges in constant ratio in volume (logarithmic and geometric grids, in size or volume).
   bool geometric_in_volume() const { return geometric_; }

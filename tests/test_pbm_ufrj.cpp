@@ -79,7 +79,8 @@ TEST(UfrjMill, ConservesMassAndDamageWeakensTheSurvivors) {
   // Weakening: one energy class giving the top class e ≈ 0.3 E50, for ~2 stress events per
   // particle (3 s). Without damage (γ = 1e6 ⇒ D ≈ 0) the survivors are only the truncated
   // virgin population, so their median can only rise; with γ = 2 (D ≈ 0.2 per event at
-  // e/E = 0.3) every survivor weakens and the median falls below the virgin one.
+  // e/E = 0.3) every survivor weakens and the median falls below the virgin one (observed:
+  // 0.83 and 1.06 × the virgin median of 127 J/kg; the bound 0.9 leaves half of that margin).
   auto p = params(2.0, 200);
   p.spectrum = {{0.05}, {500.0}};
   double med[2] = {0, 0};

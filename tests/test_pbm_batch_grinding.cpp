@@ -82,6 +82,24 @@ TEST(BatchGrinding, ReproducesReidsSolution) {
   }
 }
 
+TEST(BatchGrinding, Rk4IsFourthOrder) {
+  // Two classes, S = (1, 0), b = 1: w_top = e^{−t}. Halving the RK4 step cuts the error at
+  // t = 2 s by → 2⁴ = 16; from RK4's amplification polynomial 1 − h + h²/2 − h³/6 + h⁴/24 the
+  // ratios are 17.396 (h 0.2 → 0.1) and 16.682 (0.1 → 0.05); required to 0.01 (the error
+  // itself is far above round-off at these steps, ≥ 1.5e−8).
+  const BatchGrinding m({0.0, 1.0}, (Eigen::MatrixXd(2, 2) << 0, 1, 0, 0).finished());
+  Eigen::VectorXd w0(2);
+  w0 << 0.0, 1.0;
+  double err[3];
+  const double h[3] = {0.2, 0.1, 0.05};
+  for (int k = 0; k < 3; ++k) {
+    Rk4 rk4(h[k]);
+    err[k] = std::abs(solve(m.system(), rk4, w0, {2.0}).back()[1] - std::exp(-2.0));
+  }
+  EXPECT_NEAR(err[0] / err[1], 17.40, 0.01);
+  EXPECT_NEAR(err[1] / err[2], 16.68, 0.01);
+}
+
 TEST(BatchGrinding, FromModelsFollowsAustinsConventions) {
   // √2 series, 8 classes from 4 mm; Austin's normalised B: every column sums to 1 and the class
   // just below the parent receives 1 − B(1/√2) (B_{j+1,j} = 1).

@@ -44,6 +44,16 @@ TEST(SizeGrid, ConvertsSizeAndVolumeAndKnowsGeometricGrids) {
   EXPECT_THROW(SizeGrid({1, 3, 2}, GridCoordinate::size, kv), comminute::Error);
 }
 
+TEST(PowerLawRate, SizeOrVolumeAndAustinsTurnDown) {
+  const double d = 2e-3, v = kv * d * d * d;
+  const PowerLawRate by_size({0.5, 1.2, GridCoordinate::size, 1e-3, std::nullopt, 2.0});
+  const PowerLawRate by_volume({0.5, 1.2, GridCoordinate::volume, 1e-9, std::nullopt, 2.0});
+  const PowerLawRate turned({0.5, 1.2, GridCoordinate::size, 1e-3, 3e-3, 2.5});
+  EXPECT_NEAR(by_size.rate(d, v), 0.5 * std::pow(2.0, 1.2), 1e-14);
+  EXPECT_NEAR(by_volume.rate(d, v), 0.5 * std::pow(v / 1e-9, 1.2), 1e-14);
+  EXPECT_NEAR(turned.rate(d, v), 0.5 * std::pow(2.0, 1.2) / (1 + std::pow(2.0 / 3, 2.5)), 1e-14);
+}
+
 TEST(MethodOfClasses, GeometricShortcutEqualsDirectEvaluation) {
   // Same B_{i,k} whether each parent is evaluated directly or read from the shifted table;
   // 1e−13 relative: only the round-off of edge/pivot ratios differs.

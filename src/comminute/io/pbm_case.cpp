@@ -26,16 +26,21 @@ std::size_t classes(const CaseTable& t) {
   return static_cast<std::size_t>(t.integer("classes", 1, 100000));
 }
 
-// Fractions (in the initial table's basis) per class from a cumulative passing curve.
+// Fractions (in the initial table's basis) per class from a cumulative passing curve: linear in
+// ln d between measured sizes; below the first, the power law through the first two points
+// (Schuhmann tail) when both pass something, else nothing.
 std::vector<double> from_cumulative(const pbm::SizeGrid& g, const std::vector<double>& sizes,
                                     const std::vector<double>& passing) {
   auto at = [&](double d) {
-    if (d <= sizes.front()) return passing.front() * (sizes.front() > 0 ? 0.0 : 1.0);
+    if (d <= sizes.front()) {
+      if (sizes.size() < 2 || !(passing[0] > 0) || !(passing[1] > passing[0])) return 0.0;
+      const double slope = std::log(passing[1] / passing[0]) / std::log(sizes[1] / sizes[0]);
+      return passing[0] * std::pow(d / sizes[0], slope);
+    }
     if (d >= sizes.back()) return passing.back();
     const auto i = static_cast<std::size_t>(std::upper_bound(sizes.begin(), sizes.end(), d) -
                                             sizes.begin() - 1);
-    const double w = sizes[i] > 0 ? std::log(d / sizes[i]) / std::log(sizes[i + 1] / sizes[i])
-                                  : d / sizes[i + 1];
+    const double w = std::log(d / sizes[i]) / std::log(sizes[i + 1] / sizes[i]);
     return passing[i] + w * (passing[i + 1] - passing[i]);
   };
   std::vector<double> f(g.classes());
@@ -86,9 +91,9 @@ std::vector<double> initial_fractions(const CaseTable& t, const pbm::SizeGrid& g
     const auto csv = CsvColumns::read(t.file_path("file"), t.key_path("file"));
     const auto sizes = csv.column("size_m"), passing = csv.column("cumulative_passing");
     for (std::size_t r = 0; r < sizes.size(); ++r) {
-      if (r > 0 && !(sizes[r] > sizes[r - 1]))
+      if (!(sizes[r] > 0) || (r > 0 && !(sizes[r] > sizes[r - 1])))
         throw InputError(t.file_path("file").string(), t.key_path("file"), csv.line_of_row(r),
-                         "size_m must increase");
+                         "size_m must be positive and increasing");
       if (passing[r] < 0 || passing[r] > 1 + 1e-6 || (r > 0 && passing[r] < passing[r - 1]))
         throw InputError(t.file_path("file").string(), t.key_path("file"), csv.line_of_row(r),
                          "cumulative_passing must be non-decreasing within [0, 1]");

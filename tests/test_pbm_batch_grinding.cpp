@@ -100,6 +100,24 @@ TEST(BatchGrinding, Rk4IsFourthOrder) {
   EXPECT_NEAR(err[1] / err[2], 16.68, 0.01);
 }
 
+TEST(BatchGrinding, AdaptiveErrorFollowsTheTolerance) {
+  // Same two-class problem: the global error of Dormand–Prince with local error control is of
+  // the order of the tolerance; required below 10 × rtol for rtol = 1e−4 … 1e−10 and falling
+  // with it (atol is kept negligible).
+  const BatchGrinding m({0.0, 1.0}, (Eigen::MatrixXd(2, 2) << 0, 1, 0, 0).finished());
+  Eigen::VectorXd w0(2);
+  w0 << 0.0, 1.0;
+  double prev = 1;
+  for (double rtol : {1e-4, 1e-6, 1e-8, 1e-10}) {
+    DormandPrince dp({rtol, 1e-16, 1000000});
+    const double err =
+        std::abs(solve(m.system(), dp, w0, {5.0}).back()[1] - std::exp(-5.0)) / std::exp(-5.0);
+    EXPECT_LT(err, 10 * rtol) << rtol;
+    EXPECT_LT(err, prev) << rtol;
+    prev = err;
+  }
+}
+
 TEST(BatchGrinding, FromModelsFollowsAustinsConventions) {
   // √2 series, 8 classes from 4 mm; Austin's normalised B: every column sums to 1 and the class
   // just below the parent receives 1 − B(1/√2) (B_{j+1,j} = 1).

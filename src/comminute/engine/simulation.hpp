@@ -100,7 +100,6 @@ class Simulation {
   void particle_wall_forces();
   void rebuild();
   void build_wall_candidates();
-  void reduce_thread_buffers();
   void kick_drift();
   bool kick();
   [[noreturn]] void report_non_finite() const;
@@ -111,7 +110,11 @@ class Simulation {
   std::vector<std::uint8_t> wall_full_scan_;        // per wall: surface moves, check every step
   std::vector<double> wall_travel_;                 // per wall: distance moved since the build
   std::vector<Vec3> x_at_build_;
-  std::vector<std::vector<Vec3>> thread_force_, thread_torque_;  // threads 1.. (0 writes p.f)
+  struct CrossForce {  // a pair's share for a particle owned by another thread
+    std::uint32_t particle;
+    Vec3 force, torque;
+  };
+  std::vector<std::vector<CrossForce>> cross_;  // per thread, reused
   bool need_rebuild_ = true;
   bool forces_cleared_ = false;
   bool is_setup_ = false;

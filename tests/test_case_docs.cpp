@@ -26,10 +26,12 @@ TEST(CaseDocs, EveryKeyOfTheSettleExampleIsDocumented) {
       leaf = leaf.substr(0, leaf.find('['));
       if (path.rfind("materials.", 0) == 0 && path.find('.', 10) == std::string::npos) continue;
       if (path.find('.') == std::string::npos) {  // a top-level table: documented as a heading
-        EXPECT_NE(doc.find("[" + leaf), std::string::npos) << path << " is not in docs/case-file.md";
+        EXPECT_NE(doc.find("[" + leaf), std::string::npos)
+            << path << " is not in docs/case-file.md";
         continue;
       }
-      EXPECT_NE(doc.find("`" + leaf + "`"), std::string::npos) << path << " is not in docs/case-file.md";
+      EXPECT_NE(doc.find("`" + leaf + "`"), std::string::npos)
+          << path << " is not in docs/case-file.md";
     }
   }
 }

@@ -65,7 +65,7 @@ TEST(Walls, PistonForceIsTheReactionAndItsWorkIsBooked) {
                        std::sqrt(2 * estar * std::sqrt(r * delta) * m);
   const double hertz = 4.0 / 3.0 * estar * std::sqrt(r) * std::pow(delta, 1.5) + gamma * 0.5e-3;
   EXPECT_NEAR(top, hertz, 0.002 * hertz);  // 0.2 %: the sphere's inertia at 1 mm/s is negligible
-  EXPECT_NEAR(top, -bottom, 1e-3 * top);              // quasi-static: action = reaction
+  EXPECT_NEAR(top, -bottom, 1e-3 * top);   // quasi-static: action = reaction
   const Observables o = sim->observe();
   const double booked = o.elastic + o.kinetic_translational + o.ledger.damping;
   EXPECT_NEAR(o.ledger.wall_work, booked, 0.01 * booked);  // 1 %: first-order work quadrature
@@ -81,7 +81,8 @@ TEST(Walls, RotatingDrumDragsASphereToTheWallSpeed) {
   s.gravity = {0, 0, -9.81};
   auto sim = make_simulation(s);
   const double R = 0.1, r = 0.005, omega = 0.5;
-  sim->walls.push_back(std::make_unique<CylinderWall>(Vec3{0, 0, 0}, Vec3{0, 1, 0}, R, 0.05, true, false));
+  sim->walls.push_back(
+      std::make_unique<CylinderWall>(Vec3{0, 0, 0}, Vec3{0, 1, 0}, R, 0.05, true, false));
   sim->walls[0]->kinematics.angular_velocity = {0, omega, 0};
   add_sphere(*sim, {0, 0, -(R - r)}, r);
   sim->dt = 2e-6;
@@ -125,7 +126,8 @@ TEST(Adhesion, SjkrSphereOnAPlaneRestsAtTheBalancedOverlap) {
   }
   const double overlap = r - sim->particles.x[0].z;
   EXPECT_NEAR(overlap, lo, 1e-3 * lo);
-  EXPECT_GT(lo, 1.2 * std::pow(m * 9.81 / (4.0 / 3.0 * estar * std::sqrt(r)), 2.0 / 3.0));  // adhesion matters
+  EXPECT_GT(lo, 1.2 * std::pow(m * 9.81 / (4.0 / 3.0 * estar * std::sqrt(r)),
+                               2.0 / 3.0));  // adhesion matters
 }
 
 TEST(Rolling, EpsdStopsARollingSphereLikeFullyMobilisedResistance) {

@@ -150,7 +150,8 @@ void Simulation::build_wall_candidates() {
   std::vector<WallContact> found;
   const auto& p = particles;
   for (std::uint32_t w = 0; w < walls.size(); ++w) {
-    wall_full_scan_[w] = walls[w]->surface_moves() && norm2(walls[w]->kinematics.angular_velocity) > 0;
+    wall_full_scan_[w] =
+        walls[w]->surface_moves() && norm2(walls[w]->kinematics.angular_velocity) > 0;
     for (std::uint32_t i = 0; i < p.size(); ++i) {
       found.clear();
       const bool near = walls[w]->contacts(p.x[i], p.radius[i], options.skin, found) > 0;
@@ -213,8 +214,7 @@ void Simulation::particle_particle_forces() {
   const auto& rows = nlist_.rows();
   std::vector<std::uint32_t> owner_begin(static_cast<std::size_t>(nt) + 1, 0);
   owner_begin[static_cast<std::size_t>(nt)] = static_cast<std::uint32_t>(n);
-  for (int t = 1; t < nt; ++t)
-    owner_begin[t] = npairs == 0 ? 0 : nlist_.first[npairs * t / nt];
+  for (int t = 1; t < nt; ++t) owner_begin[t] = npairs == 0 ? 0 : nlist_.first[npairs * t / nt];
   cross_.resize(static_cast<std::size_t>(nt));
   std::vector<ThreadTally> tally(static_cast<std::size_t>(nt));
   const ContactLaw& contact_law = *law;

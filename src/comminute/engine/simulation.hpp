@@ -5,8 +5,8 @@
 #include <memory>
 #include <vector>
 
-#include "comminute/contact/contact_law.hpp"
 #include "comminute/contact/cohesion.hpp"
+#include "comminute/contact/contact_law.hpp"
 #include "comminute/contact/rolling_resistance.hpp"
 #include "comminute/engine/module.hpp"
 #include "comminute/geometry/wall.hpp"
@@ -22,7 +22,7 @@ struct WallContactRecord {
   std::uint32_t particle = 0;  // current slot
   std::uint32_t wall = 0;
   std::int32_t feature = 0;
-  std::uint64_t id = 0;        // particle id
+  std::uint64_t id = 0;  // particle id
   ContactHistory history;
 };
 
@@ -38,8 +38,8 @@ struct Observables {
   double time = 0;
   std::uint64_t step = 0;
   std::size_t particles = 0;
-  std::size_t contacts = 0;       // particle–particle contacts with overlap > 0
-  std::size_t wall_contacts = 0;  // particle–wall contacts with overlap > 0
+  std::size_t contacts = 0;          // particle–particle contacts with overlap > 0
+  std::size_t wall_contacts = 0;     // particle–wall contacts with overlap > 0
   double kinetic_translational = 0;  // J
   double kinetic_rotational = 0;     // J
   double potential_gravity = 0;      // J, relative to z = 0 along -gravity
@@ -48,8 +48,8 @@ struct Observables {
 };
 
 struct SimulationOptions {
-  double skin = 0;  // m, Verlet skin (0: 0.2 x mean diameter at the first build with particles)
-  int sort_every = 20;        // re-sort particles by cell every this many list rebuilds (0: never)
+  double skin = 0;      // m, Verlet skin (0: 0.2 x mean diameter at the first build with particles)
+  int sort_every = 20;  // re-sort particles by cell every this many list rebuilds (0: never)
 };
 
 class Simulation {

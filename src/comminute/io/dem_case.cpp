@@ -180,7 +180,8 @@ double read_insertion(const CaseTable& t, std::size_t index, Simulation& sim) {
     const bool has_count = t.has("count"), has_fraction = t.has("volume_fraction");
     if (has_count == has_fraction) t.fail({}, "give exactly one of 'count' or 'volume_fraction'");
     if (has_count) s.count = static_cast<std::uint64_t>(t.integer("count", 1, 1'000'000'000));
-    if (has_fraction) s.volume_fraction = t.number("volume_fraction", Limits{0.0, 0.5, true, false});
+    if (has_fraction)
+      s.volume_fraction = t.number("volume_fraction", Limits{0.0, 0.5, true, false});
   }
   const double rmin = 0.5 * s.size->min_diameter();
   sim.modules.push_back(std::make_unique<InsertionModule>(std::move(s), sim.seed));
@@ -194,7 +195,8 @@ DemCase build_dem_case(const CaseTable& root) {
   out.sim = std::make_unique<Simulation>();
   Simulation& sim = *out.sim;
   const CaseTable s = root.table("simulation");
-  sim.seed = static_cast<std::uint64_t>(s.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
+  sim.seed =
+      static_cast<std::uint64_t>(s.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
   out.end_time = s.number("end_time", kPositive);
   sim.gravity = s.vec3("gravity", Limits::any(), {0, 0, -9.81});
   sim.options.skin = s.number("skin", Limits::non_negative(), 0.0);
@@ -216,14 +218,16 @@ DemCase build_dem_case(const CaseTable& root) {
   double t_rayleigh = std::numeric_limits<double>::infinity();
   for (std::size_t m = 0; m < sim.materials.size(); ++m) {
     const Material& mat = sim.materials.material(static_cast<std::uint16_t>(m));
-    t_rayleigh = std::min(t_rayleigh, units::pi * rmin * std::sqrt(mat.density / mat.shear_modulus()) /
-                                          (0.1631 * mat.poisson_ratio + 0.8766));
+    t_rayleigh =
+        std::min(t_rayleigh, units::pi * rmin * std::sqrt(mat.density / mat.shear_modulus()) /
+                                 (0.1631 * mat.poisson_ratio + 0.8766));
   }
   const double fraction = s.number("time_step_fraction", Limits{0.0, 1.0, true, false}, 0.2);
   if (s.has("time_step")) {
     sim.dt = s.number("time_step", kPositive);
-    out.time_step_note = fmt::format("time step {:.4g} s (set) = {:.1f} % of the Rayleigh time {:.4g} s",
-                                     sim.dt, 100 * sim.dt / t_rayleigh, t_rayleigh);
+    out.time_step_note =
+        fmt::format("time step {:.4g} s (set) = {:.1f} % of the Rayleigh time {:.4g} s", sim.dt,
+                    100 * sim.dt / t_rayleigh, t_rayleigh);
     if (sim.dt > 0.3 * t_rayleigh)
       out.warnings.push_back(fmt::format(
           "the time step {:.4g} s is {:.0f} % of the Rayleigh time {:.4g} s of the smallest "

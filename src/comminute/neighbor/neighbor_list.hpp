@@ -42,9 +42,9 @@ class NeighborList {
   const std::vector<std::uint32_t>& rows() const { return row_; }
 
  private:
-  std::vector<std::uint64_t> ids_;    // p.id at build
-  std::vector<std::uint8_t> large_;   // 1 for particles in the large-particle grid
-  std::vector<std::uint32_t> row_;    // CSR offsets of rows by owner slot (size n+1)
+  std::vector<std::uint64_t> ids_;   // p.id at build
+  std::vector<std::uint8_t> large_;  // 1 for particles in the large-particle grid
+  std::vector<std::uint32_t> row_;   // CSR offsets of rows by owner slot (size n+1)
   // scratch reused between builds
   struct SavedContact {
     std::uint64_t a, b;  // ids of owner and other

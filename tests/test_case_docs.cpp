@@ -16,7 +16,7 @@ TEST(CaseDocs, EveryKeyOfTheSettleExampleIsDocumented) {
   ss << in.rdbuf();
   const std::string doc = ss.str();
   ASSERT_FALSE(doc.empty());
-  for (const char* name : {"/examples/settle/settle.toml", "/bench/cases/settle_20000.toml"}) {
+  for (const char* name : {"/examples/settle/settle.toml"}) {
     io::CaseFile f = io::CaseFile::load(std::string(COMMINUTE_SOURCE_DIR) + name);
     io::build_dem_case(f.root());
     if (auto o = f.root().optional_table("output")) io::read_output_options(*o);

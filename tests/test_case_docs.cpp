@@ -10,13 +10,14 @@
 
 using namespace comminute;
 
-TEST(CaseDocs, EveryKeyOfTheSettleExampleIsDocumented) {
+TEST(CaseDocs, EveryKeyOfTheDemExamplesIsDocumented) {
   std::ifstream in(std::string(COMMINUTE_SOURCE_DIR) + "/docs/case-file.md");
   std::stringstream ss;
   ss << in.rdbuf();
   const std::string doc = ss.str();
   ASSERT_FALSE(doc.empty());
-  for (const char* name : {"/examples/settle/settle.toml"}) {
+  for (const char* name : {"/examples/settle/settle.toml", "/examples/drum/rotating_drum.toml",
+                           "/examples/piston/confined_compression.toml"}) {
     io::CaseFile f = io::CaseFile::load(std::string(COMMINUTE_SOURCE_DIR) + name);
     io::build_dem_case(f.root());
     if (auto o = f.root().optional_table("output")) io::read_output_options(*o);

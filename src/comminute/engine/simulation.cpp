@@ -159,7 +159,7 @@ void Simulation::build_wall_candidates() {
       // one candidate per (particle, wall, feature); a full-scan wall keeps one per particle
       if (found.empty()) found.push_back({{}, {}, -1, 0});
       for (const auto& c : found) {
-        WallContactRecord r{i, w, c.feature, p.id[i], {}};
+        WallContactRecord r{i, w, c.feature, 0, p.id[i], {}};
         auto it = std::lower_bound(old.begin(), old.end(), r, key_less);
         if (it != old.end() && !key_less(r, *it)) r.history = it->history;
         wall_candidates_.push_back(r);
@@ -417,6 +417,8 @@ void Simulation::save(Archive& a) const {
   a.put_value("sim/ledger", ledger);
   a.put_value("sim/elastic", elastic_energy_);
   a.put_value("sim/max_disp2", max_disp2_);
+  a.put_value("sim/need_rebuild", static_cast<std::uint8_t>(need_rebuild_));
+  a.put_value("sim/forces_cleared", static_cast<std::uint8_t>(forces_cleared_));
   for (const auto& m : modules) m->save(a);
 }
 
@@ -458,7 +460,9 @@ void Simulation::load(const Archive& a) {
   elastic_energy_ = a.get_value<double>("sim/elastic");
   max_disp2_ = a.get_value<double>("sim/max_disp2");
   for (auto& m : modules) m->load(a);
-  need_rebuild_ = false;
+  // a module may have inserted or removed particles after the last force computation
+  need_rebuild_ = a.get_value<std::uint8_t>("sim/need_rebuild") != 0;
+  forces_cleared_ = a.get_value<std::uint8_t>("sim/forces_cleared") != 0;
   // Forces were saved with the particles, so the next step continues exactly; modules restored
   // their own state in load() and are not set up again (a fill would insert twice).
   is_setup_ = true;

@@ -22,7 +22,8 @@ struct WallContactRecord {
   std::uint32_t particle = 0;  // current slot
   std::uint32_t wall = 0;
   std::int32_t feature = 0;
-  std::uint64_t id = 0;  // particle id
+  std::uint32_t unused = 0;  // explicit padding: checkpoints copy the bytes of this struct
+  std::uint64_t id = 0;      // particle id
   ContactHistory history;
 };
 

@@ -18,7 +18,7 @@ struct ContactHistory {
   Vec3 tangential_spring;   // m, accumulated tangential displacement (in the current tangent plane)
   Vec3 rolling_spring;      // rad (x radius: m), elastic rolling displacement (EPSD model)
   double max_overlap = 0;   // m, largest overlap in this contact
-  double loading_work = 0;  // J, work of the elastic normal force while the overlap increased
+  double loading_work = 0;  // J, elastic work of the normal force up to max_overlap
   double peak_normal_force = 0;  // N, largest elastic normal force in this contact
   double normal_force = 0;  // N, elastic normal force of the last step (0 when apart)
 };
@@ -42,6 +42,7 @@ struct ContactForces {
   Vec3 tangential_force;            // N
   Vec3 rolling_torque;              // N m on i (j gets the opposite)
   double stored_energy = 0;         // J, elastic energy stored in the contact now
+  double normal_elastic_energy = 0; // J, integral of the elastic normal force from 0 to overlap
   double damping_dissipation = 0;   // J, dissipated by dashpots during this step
   double friction_dissipation = 0;  // J, dissipated by sliding (and rolling slip) this step
 };

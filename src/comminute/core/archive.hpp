@@ -18,9 +18,8 @@ class Archive {
   template <class T>
   void put(const std::string& name, const std::vector<T>& v) {
     static_assert(std::is_trivially_copyable_v<T>);
-    std::vector<std::uint8_t>& b = data_[name];
-    b.resize(v.size() * sizeof(T));
-    if (!v.empty()) std::memcpy(b.data(), v.data(), b.size());
+    const auto* bytes = reinterpret_cast<const std::uint8_t*>(v.data());
+    data_[name].assign(bytes, bytes + v.size() * sizeof(T));
   }
   template <class T>
   void put_value(const std::string& name, const T& x) {

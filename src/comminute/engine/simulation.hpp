@@ -16,11 +16,13 @@
 
 namespace comminute {
 
-// Particle–wall contacts found in the last step (history keyed by particle id, wall, feature).
+// A particle–wall contact: history keyed by particle id, wall and feature. wall_contacts() lists
+// those touching in the last force computation.
 struct WallContactRecord {
   std::uint32_t particle = 0;  // current slot
   std::uint32_t wall = 0;
   std::int32_t feature = 0;
+  std::uint64_t id = 0;        // particle id
   ContactHistory history;
 };
 
@@ -46,7 +48,7 @@ struct Observables {
 };
 
 struct SimulationOptions {
-  double skin = 0;            // m, Verlet skin (0: 0.1 x mean diameter is chosen at setup)
+  double skin = 0;  // m, Verlet skin (0: 0.2 x mean diameter at the first build with particles)
   int sort_every = 20;        // re-sort particles by cell every this many list rebuilds (0: never)
 };
 
@@ -81,7 +83,6 @@ class Simulation {
   const NeighborList& pairs() const { return nlist_; }
   NeighborList& pairs() { return nlist_; }
   const std::vector<WallContactRecord>& wall_contacts() const { return wall_contacts_; }
-  std::vector<WallContactRecord>& wall_contacts() { return wall_contacts_; }
   Observables observe() const;
   // Smallest Rayleigh time over the particles (s): pi R sqrt(rho/G) / (0.1631 nu + 0.8766).
   double rayleigh_time() const;
@@ -94,16 +95,25 @@ class Simulation {
   void compute_forces();
   void particle_particle_forces();
   void particle_wall_forces();
-  void rebuild_if_needed();
+  void rebuild();
+  void build_wall_candidates();
+  void reduce_thread_buffers();
+  void kick(double half_dt);
+  double drift();  // returns the largest squared displacement since the last build
   void check_finite() const;
 
   NeighborList nlist_;
-  std::vector<WallContactRecord> wall_contacts_;
+  std::vector<WallContactRecord> wall_candidates_;  // near walls at the last build, with history
+  std::vector<WallContactRecord> wall_contacts_;    // touching now
+  std::vector<std::uint8_t> wall_full_scan_;        // per wall: surface moves, check every step
+  std::vector<double> wall_travel_;                 // per wall: distance moved since the build
   std::vector<Vec3> x_at_build_;
+  std::vector<std::vector<Vec3>> thread_force_, thread_torque_;  // threads 1.. (0 writes p.f)
   bool need_rebuild_ = true;
   bool is_setup_ = false;
   std::uint64_t rebuilds_ = 0;
   double elastic_energy_ = 0;
+  double max_disp2_ = 0;
 };
 
 }  // namespace comminute

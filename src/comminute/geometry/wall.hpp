@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "comminute/core/archive.hpp"
 #include "comminute/core/vec3.hpp"
 
 namespace comminute {
@@ -46,6 +47,12 @@ class Wall {
   virtual void advance(double dt) = 0;
   // Triangulated surface for output; `extent` (m) bounds infinite walls.
   virtual SurfaceMesh surface(double extent) const = 0;
+  // True when the wall's surface moves (so particles near it must be re-found): translation, or
+  // rotation that changes the shape's position (a cylinder turning about its own axis does not).
+  virtual bool surface_moves() const { return norm2(kinematics.velocity) > 0; }
+  // Checkpoint of the geometry state under names prefixed by `prefix`.
+  virtual void save(Archive& a, const std::string& prefix) const = 0;
+  virtual void load(const Archive& a, const std::string& prefix) = 0;
 
   std::string name;           // from the case file, used in outputs
   std::uint16_t material = 0;

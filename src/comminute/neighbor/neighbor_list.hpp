@@ -1,8 +1,13 @@
 #pragma once
-// Verlet neighbour list on a cell grid: a half list of candidate pairs (i < j by slot) within
-// r_i + r_j + skin, rebuilt when some particle has moved more than skin/2 since the last build
-// (or after insertion/removal). Stored as pair arrays (first, second, history) so that hot loops
-// run over plain arrays; contact history is carried across rebuilds by particle ids.
+// Verlet neighbour list on cell grids: a half list of candidate pairs within r_i + r_j + skin,
+// rebuilt when some particle has moved more than skin/2 since the last build (or after
+// insertion/removal). Stored as pair arrays (first, second, history) grouped by `first`, so hot
+// loops run over plain arrays. Contact history is carried across rebuilds by particle ids.
+//
+// Polydisperse beds: particles with radius <= r_ref (the 90th percentile, or all of them when
+// r_max <= 1.5 r_ref) are binned in a grid of edge 2 r_ref + skin and searched with the 27-cell
+// stencil; the few larger ones live in a second grid of edge 2 r_max + skin, and each of them
+// scans the small-particle grid over its own reach. Work stays ~linear for a size ratio of 10.
 #include <cstdint>
 #include <vector>
 
@@ -13,18 +18,31 @@ namespace comminute {
 
 class NeighborList {
  public:
-  std::vector<std::uint32_t> first;     // slot i of each pair
-  std::vector<std::uint32_t> second;    // slot j > i
+  std::vector<std::uint32_t> first;     // slot of the pair's owner
+  std::vector<std::uint32_t> second;    // slot of the other particle
   std::vector<ContactHistory> history;  // per pair
   std::vector<std::uint8_t> touching;   // 1 when the pair overlapped in the last force step
 
   std::size_t size() const { return first.size(); }
 
-  // Builds the list for the current positions. The history of pairs that were touching is moved
-  // over from the previous list, matched by particle ids (prev_ids: ids of the previous slots).
-  void build(const ParticleStore& p, double skin, const std::vector<std::uint64_t>& prev_ids);
+  // Builds the list for the current positions and moves the history of touching pairs over from
+  // the previous list, matched by particle ids.
+  void build(const ParticleStore& p, double skin);
   // Slot order that sorts particles by grid cell (memory locality); cell edge = `cell`.
   static std::vector<std::size_t> cell_order(const ParticleStore& p, double cell);
+  // Ids of the slots when the list was built (for checkpoints and module look-ups).
+  const std::vector<std::uint64_t>& ids_at_build() const { return ids_; }
+  // Checkpoint support: restore a list exactly as saved.
+  void restore(std::vector<std::uint32_t> f, std::vector<std::uint32_t> s,
+               std::vector<ContactHistory> h, std::vector<std::uint8_t> t,
+               std::vector<std::uint64_t> ids, std::vector<std::uint8_t> large);
+  const std::vector<std::uint8_t>& large() const { return large_; }
+
+ private:
+  std::vector<std::uint64_t> ids_;    // p.id at build
+  std::vector<std::uint8_t> large_;   // 1 for particles in the large-particle grid
+  std::vector<std::uint32_t> row_;    // CSR offsets of rows by owner slot (size n+1)
+  void make_rows(std::size_t n);
 };
 
 }  // namespace comminute

@@ -2,14 +2,9 @@
 
 #include <cmath>
 
-#include "comminute/core/units.hpp"
+#include "comminute/particles/restitution.hpp"
 
 namespace comminute {
-
-double damping_beta(double restitution) {
-  const double l = std::log(restitution);
-  return l / std::sqrt(l * l + units::pi * units::pi);
-}
 
 std::uint16_t MaterialTable::add(const Material& m) {
   const std::size_t n = materials_.size();

@@ -27,7 +27,7 @@ struct PairInput {
 struct PairParameters : PairInput {
   double effective_modulus = 0.0;        // E*, 1/E* = (1-v1^2)/E1 + (1-v2^2)/E2  [Pa]
   double effective_shear_modulus = 0.0;  // G*, 1/G* = 2(2-v1)(1+v1)/E1 + ...      [Pa]
-  double damping_beta = 0.0;             // beta = ln e / sqrt(ln^2 e + pi^2) (<= 0)
+  double damping_beta = 0.0;        // beta = ln e / sqrt(ln^2 e + pi^2) (<= 0), linear law
 };
 
 class MaterialTable {
@@ -49,8 +49,5 @@ class MaterialTable {
   std::vector<PairInput> inputs_;  // n x n
   std::vector<PairParameters> pairs_;
 };
-
-// beta(e) = ln e / sqrt(ln^2 e + pi^2), MODELS.md "Contact mechanics".
-double damping_beta(double restitution);
 
 }  // namespace comminute

@@ -1,0 +1,47 @@
+// Elastic–plastic spring–dashpot rolling resistance (Ai et al. 2011, model C; Iwashita & Oda):
+// k_r = 2.25 k_n mu_r^2 R*^2, dM = -k_r w_rel dt, |M| <= mu_r R* |F_n| (full mobilisation, no
+// damping), viscous part -C_r w_rel with C_r = eta_r 2 sqrt(I_r k_r), I_r = m* R*^2 (eta_r from
+// [pair] rolling_damping). The spring torque is stored in ContactHistory::rolling_spring (N m).
+#include <cmath>
+
+#include "comminute/contact/rolling_resistance.hpp"
+
+namespace comminute {
+namespace {
+
+class EpsdRolling final : public RollingResistance {
+ public:
+  std::string name() const override { return "epsd"; }
+  void compute(const ContactKinematics& k, const PairParameters& p, ContactHistory& h,
+               ContactForces& out) const override {
+    const double r = k.effective_radius;
+    const Vec3 wr = k.relative_angular_velocity - dot(k.relative_angular_velocity, k.normal) * k.normal;
+    // k_n from the secant stiffness of the normal force
+    const double kn = k.overlap > 0 ? std::abs(out.elastic_normal_force) / k.overlap : 0.0;
+    const double kr = 2.25 * kn * p.rolling_friction * p.rolling_friction * r * r;
+    Vec3 m = h.rolling_spring;
+    m -= dot(m, k.normal) * k.normal;  // keep it in the tangent plane
+    m -= kr * k.dt * wr;
+    const double limit = p.rolling_friction * r * std::abs(out.normal_force);
+    const double mm = norm(m);
+    if (mm > limit) {
+      const double before = kr > 0 ? 0.5 * mm * mm / kr : 0.0;
+      m *= limit / mm;
+      out.friction_dissipation += before - (kr > 0 ? 0.5 * limit * limit / kr : 0.0);
+      h.rolling_spring = m;
+      out.rolling_torque += m;
+      return;
+    }
+    h.rolling_spring = m;
+    const double cr = p.rolling_damping * 2.0 * std::sqrt(k.effective_mass * r * r * kr);
+    out.rolling_torque += m - cr * wr;
+    out.damping_dissipation += cr * norm2(wr) * k.dt;
+    if (kr > 0) out.stored_energy += 0.5 * norm2(m) / kr;
+  }
+};
+
+const bool registered =
+    RollingResistanceRegistry::add("epsd", [] { return std::make_unique<EpsdRolling>(); });
+
+}  // namespace
+}  // namespace comminute

@@ -1,0 +1,444 @@
+#include "comminute/engine/simulation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "comminute/core/error.hpp"
+#include "comminute/core/parallel.hpp"
+
+namespace comminute {
+
+Simulation::Simulation() = default;
+Simulation::~Simulation() = default;
+
+void Simulation::setup() {
+  if (!law) throw Error("simulation has no contact law");
+  if (!(dt > 0)) throw Error("simulation time step is not set");
+  for (auto& m : modules) m->setup(*this);
+  is_setup_ = true;
+  need_rebuild_ = true;
+  compute_forces();
+}
+
+double Simulation::rayleigh_time() const {
+  double tr = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const Material& m = materials.material(particles.material[i]);
+    const double rho = particles.mass[i] / (4.0 / 3.0 * M_PI * std::pow(particles.radius[i], 3));
+    const double t = M_PI * particles.radius[i] * std::sqrt(rho / m.shear_modulus()) /
+                     (0.1631 * m.poisson_ratio + 0.8766);
+    tr = std::min(tr, t);
+  }
+  return tr;
+}
+
+void Simulation::run(std::uint64_t n) {
+  for (std::uint64_t s = 0; s < n; ++s) step();
+}
+
+void Simulation::kick(double h) {
+  auto& p = particles;
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (p.flags[i] & pflag::fixed) continue;
+    p.v[i] += (h / p.mass[i]) * p.f[i];
+    p.w[i] += (h / p.inertia[i]) * p.t[i];
+  }
+}
+
+double Simulation::drift() {
+  auto& p = particles;
+  const std::size_t n = p.size();
+  const bool track = x_at_build_.size() == n;
+  double worst = 0;
+#pragma omp parallel for schedule(static) reduction(max : worst)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(p.flags[i] & pflag::fixed)) p.x[i] += dt * p.v[i];
+    if (track) worst = std::max(worst, norm2(p.x[i] - x_at_build_[i]));
+  }
+  return track ? worst : std::numeric_limits<double>::infinity();
+}
+
+void Simulation::step() {
+  if (!is_setup_) setup();
+  kick(0.5 * dt);
+  max_disp2_ = drift();
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    walls[k]->advance(dt);
+    wall_travel_[k] += norm(walls[k]->kinematics.velocity) * dt;
+  }
+  time += dt;
+  for (auto& m : modules) m->pre_force(*this);
+  compute_forces();
+  for (auto& m : modules) m->post_force(*this);
+  kick(0.5 * dt);
+  ++step_count;
+  check_finite();
+  for (auto& m : modules) m->end_of_step(*this);
+}
+
+void Simulation::check_finite() const {
+  const auto& p = particles;
+  bool bad = false;
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static) reduction(|| : bad)
+  for (std::size_t i = 0; i < n; ++i)
+    bad = bad || !is_finite(p.x[i]) || !is_finite(p.v[i]) || !is_finite(p.w[i]);
+  if (!bad) return;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!is_finite(p.x[i]) || !is_finite(p.v[i]) || !is_finite(p.w[i]))
+      throw SimulationError(fmt::format(
+          "particle id {} has a non-finite position/velocity at t = {:.9g} s (step {}): x = ({}, "
+          "{}, {}), v = ({}, {}, {}); the time step {:.3g} s may be too large or an input is "
+          "invalid",
+          p.id[i], time, step_count, p.x[i].x, p.x[i].y, p.x[i].z, p.v[i].x, p.v[i].y, p.v[i].z,
+          dt));
+}
+
+void Simulation::rebuild() {
+  auto& p = particles;
+  if (options.skin <= 0 && !p.empty()) {
+    double mean = 0;
+    for (double r : p.radius) mean += 2 * r;
+    options.skin = 0.2 * mean / static_cast<double>(p.size());
+  }
+  const bool sort_now = options.sort_every > 0 && rebuilds_ % options.sort_every == 0;
+  if (sort_now && !p.empty()) {
+    const double rmax = *std::max_element(p.radius.begin(), p.radius.end());
+    auto order = NeighborList::cell_order(p, 2 * rmax + options.skin);
+    p.permute(order);
+  }
+  nlist_.build(p, options.skin);
+  x_at_build_ = p.x;
+  build_wall_candidates();
+  need_rebuild_ = false;
+  ++rebuilds_;
+}
+
+void Simulation::build_wall_candidates() {
+  // histories of the touching wall contacts, by (id, wall, feature)
+  std::vector<WallContactRecord> old;
+  for (const auto& c : wall_candidates_)
+    if (c.history.normal_force != 0 || c.history.max_overlap > 0) old.push_back(c);
+  auto key_less = [](const WallContactRecord& a, const WallContactRecord& b) {
+    return std::tie(a.id, a.wall, a.feature) < std::tie(b.id, b.wall, b.feature);
+  };
+  std::sort(old.begin(), old.end(), key_less);
+  wall_candidates_.clear();
+  wall_full_scan_.assign(walls.size(), 0);
+  wall_travel_.assign(walls.size(), 0.0);
+  std::vector<WallContact> found;
+  const auto& p = particles;
+  for (std::uint32_t w = 0; w < walls.size(); ++w) {
+    wall_full_scan_[w] = walls[w]->surface_moves() && norm2(walls[w]->kinematics.angular_velocity) > 0;
+    for (std::uint32_t i = 0; i < p.size(); ++i) {
+      found.clear();
+      const bool near = walls[w]->contacts(p.x[i], p.radius[i], options.skin, found) > 0;
+      if (!near && !wall_full_scan_[w]) continue;
+      // one candidate per (particle, wall, feature); a full-scan wall keeps one per particle
+      if (found.empty()) found.push_back({{}, {}, -1, 0});
+      for (const auto& c : found) {
+        WallContactRecord r{i, w, c.feature, p.id[i], {}};
+        auto it = std::lower_bound(old.begin(), old.end(), r, key_less);
+        if (it != old.end() && !key_less(r, *it)) r.history = it->history;
+        wall_candidates_.push_back(r);
+      }
+    }
+  }
+}
+
+void Simulation::compute_forces() {
+  if (!need_rebuild_) {
+    double travel = 0;
+    for (double t : wall_travel_) travel = std::max(travel, t);
+    const double half = 0.5 * options.skin;
+    if (max_disp2_ > half * half || travel > half) need_rebuild_ = true;
+  }
+  if (need_rebuild_) rebuild();
+  auto& p = particles;
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    p.f[i] = p.mass[i] * gravity;
+    p.t[i] = {};
+  }
+  for (auto& w : walls) {
+    w->force = {};
+    w->torque = {};
+  }
+  elastic_energy_ = 0;
+  particle_particle_forces();
+  particle_wall_forces();
+}
+
+namespace {
+struct ThreadTally {
+  double damping = 0, friction = 0, elastic = 0, wall_work = 0;
+};
+}  // namespace
+
+void Simulation::reduce_thread_buffers() {
+  auto& p = particles;
+  const std::size_t n = p.size();
+  const std::size_t nb = thread_force_.size();
+  if (nb == 0) return;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t b = 0; b < nb; ++b) {
+      p.f[i] += thread_force_[b][i];
+      p.t[i] += thread_torque_[b][i];
+    }
+}
+
+void Simulation::particle_particle_forces() {
+  auto& p = particles;
+  const std::size_t n = p.size();
+  const int nt = max_threads();
+  thread_force_.resize(static_cast<std::size_t>(nt - 1));
+  thread_torque_.resize(static_cast<std::size_t>(nt - 1));
+  std::vector<ThreadTally> tally(static_cast<std::size_t>(nt));
+  const std::size_t npairs = nlist_.size();
+  const ContactLaw& contact_law = *law;
+#pragma omp parallel num_threads(nt)
+  {
+    const int t = thread_id();
+    Vec3* F = p.f.data();
+    Vec3* T = p.t.data();
+    if (t > 0) {
+      auto& bf = thread_force_[t - 1];
+      auto& bt = thread_torque_[t - 1];
+      bf.assign(n, Vec3{});
+      bt.assign(n, Vec3{});
+      F = bf.data();
+      T = bt.data();
+    }
+    ThreadTally& tl = tally[t];
+    const std::size_t k0 = npairs * t / nt, k1 = npairs * (t + 1) / nt;
+    ContactKinematics ck;
+    ck.dt = dt;
+    for (std::size_t k = k0; k < k1; ++k) {
+      const std::uint32_t i = nlist_.first[k], j = nlist_.second[k];
+      const Vec3 d = p.x[i] - p.x[j];
+      const double rsum = p.radius[i] + p.radius[j];
+      const double dist2 = norm2(d);
+      if (dist2 >= rsum * rsum) {
+        if (nlist_.touching[k]) {
+          nlist_.touching[k] = 0;
+          nlist_.history[k] = ContactHistory{};
+        }
+        continue;
+      }
+      nlist_.touching[k] = 1;
+      const double dist = std::sqrt(dist2);
+      const Vec3 nrm = d / dist;
+      const double overlap = rsum - dist;
+      const double ri = p.radius[i] - 0.5 * overlap, rj = p.radius[j] - 0.5 * overlap;
+      const Vec3 vrel = p.v[i] - p.v[j] - cross(p.w[i], ri * nrm) - cross(p.w[j], rj * nrm);
+      const double vn = dot(vrel, nrm);
+      ck.normal = nrm;
+      ck.overlap = overlap;
+      ck.overlap_rate = -vn;
+      ck.tangential_velocity = vrel - vn * nrm;
+      ck.relative_angular_velocity = p.w[i] - p.w[j];
+      ck.effective_radius = p.radius[i] * p.radius[j] / rsum;
+      ck.effective_mass = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
+      const PairParameters& pp = materials.pair(p.material[i], p.material[j]);
+      ContactHistory& h = nlist_.history[k];
+      ContactForces out;
+      contact_law.compute(ck, pp, h, out);
+      if (cohesion) cohesion->compute(ck, pp, out);
+      if (rolling) rolling->compute(ck, pp, h, out);
+      if (overlap > h.max_overlap) {
+        h.max_overlap = overlap;
+        h.loading_work = out.normal_elastic_energy;
+      }
+      h.peak_normal_force = std::max(h.peak_normal_force, out.elastic_normal_force);
+      h.normal_force = out.elastic_normal_force;
+      tl.damping += out.damping_dissipation;
+      tl.friction += out.friction_dissipation;
+      tl.elastic += out.stored_energy;
+      const Vec3 fc = out.normal_force * nrm + out.tangential_force;
+      F[i] += fc;
+      F[j] -= fc;
+      T[i] += out.rolling_torque - ri * cross(nrm, out.tangential_force);
+      T[j] -= out.rolling_torque + rj * cross(nrm, out.tangential_force);
+    }
+  }
+  reduce_thread_buffers();
+  for (const auto& tl : tally) {
+    ledger.damping += tl.damping;
+    ledger.friction += tl.friction;
+    elastic_energy_ += tl.elastic;
+  }
+}
+
+void Simulation::particle_wall_forces() {
+  auto& p = particles;
+  wall_contacts_.clear();
+  std::vector<WallContact> found;
+  const ContactLaw& contact_law = *law;
+  // Wall contacts are few compared with pairs: a serial loop keeps wall forces deterministic.
+  for (auto& c : wall_candidates_) {
+    const std::uint32_t i = c.particle;
+    Wall& w = *walls[c.wall];
+    found.clear();
+    w.contacts(p.x[i], p.radius[i], 0.0, found);
+    const WallContact* hit = nullptr;
+    for (const auto& f : found)
+      if (f.feature == c.feature || c.feature < 0) hit = &f;
+    if (hit == nullptr || hit->overlap <= 0) {
+      c.history = ContactHistory{};
+      continue;
+    }
+    if (c.feature < 0 && wall_full_scan_[c.wall]) {
+      // full-scan wall: the candidate stands for whichever feature is touched now
+    }
+    const Vec3 nrm = hit->normal;
+    const double overlap = hit->overlap;
+    const double ri = p.radius[i] - overlap;
+    const Vec3 vwall = w.kinematics.velocity_at(hit->point);
+    const Vec3 vrel = p.v[i] - cross(p.w[i], ri * nrm) - vwall;
+    const double vn = dot(vrel, nrm);
+    ContactKinematics ck;
+    ck.dt = dt;
+    ck.normal = nrm;
+    ck.overlap = overlap;
+    ck.overlap_rate = -vn;
+    ck.tangential_velocity = vrel - vn * nrm;
+    ck.relative_angular_velocity = p.w[i];
+    ck.effective_radius = p.radius[i];
+    ck.effective_mass = p.mass[i];
+    const PairParameters& pp = materials.pair(p.material[i], w.material);
+    ContactForces out;
+    contact_law.compute(ck, pp, c.history, out);
+    if (cohesion) cohesion->compute(ck, pp, out);
+    if (rolling) rolling->compute(ck, pp, c.history, out);
+    ContactHistory& h = c.history;
+    if (overlap > h.max_overlap) {
+      h.max_overlap = overlap;
+      h.loading_work = out.normal_elastic_energy;
+    }
+    h.peak_normal_force = std::max(h.peak_normal_force, out.elastic_normal_force);
+    h.normal_force = out.elastic_normal_force;
+    const Vec3 fc = out.normal_force * nrm + out.tangential_force;
+    p.f[i] += fc;
+    p.t[i] += out.rolling_torque - ri * cross(nrm, out.tangential_force);
+    w.force -= fc;
+    w.torque -= cross(hit->point - w.kinematics.center, fc);
+    ledger.damping += out.damping_dissipation;
+    ledger.friction += out.friction_dissipation;
+    ledger.wall_work += dot(-fc, -vwall) * dt;  // power of the wall's force on the particle
+    elastic_energy_ += out.stored_energy;
+    WallContactRecord rec = c;
+    rec.feature = hit->feature;
+    wall_contacts_.push_back(rec);
+  }
+}
+
+Observables Simulation::observe() const {
+  Observables o;
+  const auto& p = particles;
+  o.time = time;
+  o.step = step_count;
+  o.particles = p.size();
+  for (auto t : nlist_.touching) o.contacts += t;
+  o.wall_contacts = wall_contacts_.size();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    o.kinetic_translational += 0.5 * p.mass[i] * norm2(p.v[i]);
+    o.kinetic_rotational += 0.5 * p.inertia[i] * norm2(p.w[i]);
+    o.potential_gravity -= p.mass[i] * dot(gravity, p.x[i]);
+  }
+  o.elastic = elastic_energy_;
+  o.ledger = ledger;
+  return o;
+}
+
+void Simulation::save(Archive& a) const {
+  const auto& p = particles;
+  a.put("particles/x", p.x);
+  a.put("particles/v", p.v);
+  a.put("particles/w", p.w);
+  a.put("particles/f", p.f);
+  a.put("particles/t", p.t);
+  a.put("particles/radius", p.radius);
+  a.put("particles/mass", p.mass);
+  a.put("particles/inertia", p.inertia);
+  a.put("particles/id", p.id);
+  a.put("particles/material", p.material);
+  a.put("particles/flags", p.flags);
+  a.put_value("particles/next_id", p.next_id());
+  for (std::size_t k = 0; k < p.field_names().size(); ++k)
+    a.put("fields/" + p.field_names()[k], p.field(k));
+  a.put("pairs/first", nlist_.first);
+  a.put("pairs/second", nlist_.second);
+  a.put("pairs/history", nlist_.history);
+  a.put("pairs/touching", nlist_.touching);
+  a.put("pairs/ids", nlist_.ids_at_build());
+  a.put("pairs/large", nlist_.large());
+  a.put("pairs/x_at_build", x_at_build_);
+  a.put("walls/candidates", wall_candidates_);
+  a.put("walls/travel", wall_travel_);
+  a.put("walls/full_scan", wall_full_scan_);
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    const std::string pre = fmt::format("walls/{}/", k);
+    walls[k]->save(a, pre);
+    a.put(pre + "kinematics", std::vector<Kinematics>{walls[k]->kinematics});
+  }
+  a.put_value("sim/time", time);
+  a.put_value("sim/step", step_count);
+  a.put_value("sim/dt", dt);
+  a.put_value("sim/skin", options.skin);
+  a.put_value("sim/rebuilds", rebuilds_);
+  a.put_value("sim/ledger", ledger);
+  a.put_value("sim/elastic", elastic_energy_);
+  a.put_value("sim/max_disp2", max_disp2_);
+  for (const auto& m : modules) m->save(a);
+}
+
+void Simulation::load(const Archive& a) {
+  auto& p = particles;
+  p.x = a.get<Vec3>("particles/x");
+  p.v = a.get<Vec3>("particles/v");
+  p.w = a.get<Vec3>("particles/w");
+  p.f = a.get<Vec3>("particles/f");
+  p.t = a.get<Vec3>("particles/t");
+  p.radius = a.get<double>("particles/radius");
+  p.mass = a.get<double>("particles/mass");
+  p.inertia = a.get<double>("particles/inertia");
+  p.id = a.get<std::uint64_t>("particles/id");
+  p.material = a.get<std::uint16_t>("particles/material");
+  p.flags = a.get<std::uint32_t>("particles/flags");
+  p.set_next_id(a.get_value<std::uint64_t>("particles/next_id"));
+  for (std::size_t k = 0; k < p.field_names().size(); ++k)
+    p.field(k) = a.get<double>("fields/" + p.field_names()[k]);
+  nlist_.restore(a.get<std::uint32_t>("pairs/first"), a.get<std::uint32_t>("pairs/second"),
+                 a.get<ContactHistory>("pairs/history"), a.get<std::uint8_t>("pairs/touching"),
+                 a.get<std::uint64_t>("pairs/ids"), a.get<std::uint8_t>("pairs/large"));
+  x_at_build_ = a.get<Vec3>("pairs/x_at_build");
+  wall_candidates_ = a.get<WallContactRecord>("walls/candidates");
+  wall_travel_ = a.get<double>("walls/travel");
+  wall_full_scan_ = a.get<std::uint8_t>("walls/full_scan");
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    const std::string pre = fmt::format("walls/{}/", k);
+    walls[k]->load(a, pre);
+    walls[k]->kinematics = a.get<Kinematics>(pre + "kinematics").at(0);
+  }
+  time = a.get_value<double>("sim/time");
+  step_count = a.get_value<std::uint64_t>("sim/step");
+  dt = a.get_value<double>("sim/dt");
+  options.skin = a.get_value<double>("sim/skin");
+  rebuilds_ = a.get_value<std::uint64_t>("sim/rebuilds");
+  ledger = a.get_value<EnergyLedger>("sim/ledger");
+  elastic_energy_ = a.get_value<double>("sim/elastic");
+  max_disp2_ = a.get_value<double>("sim/max_disp2");
+  for (auto& m : modules) m->load(a);
+  need_rebuild_ = false;
+  is_setup_ = true;
+  // Forces were saved with the particles, so the next step continues exactly.
+  for (auto& m : modules) m->setup(*this);
+}
+
+}  // namespace comminute

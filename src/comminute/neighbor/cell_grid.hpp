@@ -1,0 +1,34 @@
+#pragma once
+// A uniform grid of cubic cells over the bounding box of a set of points, filled by counting sort
+// (cell_start / items arrays: the particles of cell c are items[cell_start[c] .. cell_start[c+1])).
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "comminute/core/vec3.hpp"
+
+namespace comminute {
+
+class CellGrid {
+ public:
+  // Bins the points x[s] for s in `subset`; `edge` is the requested cell edge (m). The edge is
+  // enlarged if the grid would have more than ~8 cells per point.
+  void build(const std::vector<Vec3>& x, const std::vector<std::uint32_t>& subset, double edge);
+
+  double edge() const { return edge_; }
+  std::array<int, 3> cell_of(const Vec3& p) const;  // clamped to the grid
+  std::size_t index(int i, int j, int k) const {
+    return (static_cast<std::size_t>(k) * dims_[1] + j) * dims_[0] + i;
+  }
+  const std::array<int, 3>& dims() const { return dims_; }
+  const std::vector<std::uint32_t>& cell_start() const { return start_; }
+  const std::vector<std::uint32_t>& items() const { return items_; }
+
+ private:
+  Vec3 lo_;
+  double edge_ = 1;
+  std::array<int, 3> dims_{1, 1, 1};
+  std::vector<std::uint32_t> start_, items_;
+};
+
+}  // namespace comminute

@@ -1,0 +1,171 @@
+#include "comminute/neighbor/neighbor_list.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "comminute/core/parallel.hpp"
+#include "comminute/neighbor/cell_grid.hpp"
+
+namespace comminute {
+
+namespace {
+
+struct SavedContact {
+  std::uint64_t a, b;  // ids of owner and other
+  ContactHistory h;
+};
+
+// Visits the particles in the cells within `reach` cells of cell c.
+template <class F>
+void for_cells_around(const CellGrid& g, const std::array<int, 3>& c, int reach, F&& f) {
+  const auto& d = g.dims();
+  const auto& start = g.cell_start();
+  const auto& items = g.items();
+  for (int k = std::max(0, c[2] - reach); k <= std::min(d[2] - 1, c[2] + reach); ++k)
+    for (int j = std::max(0, c[1] - reach); j <= std::min(d[1] - 1, c[1] + reach); ++j)
+      for (int i = std::max(0, c[0] - reach); i <= std::min(d[0] - 1, c[0] + reach); ++i) {
+        const std::size_t cell = g.index(i, j, k);
+        for (std::uint32_t q = start[cell]; q < start[cell + 1]; ++q) f(items[q]);
+      }
+}
+
+}  // namespace
+
+void NeighborList::make_rows(std::size_t n) {
+  row_.assign(n + 1, 0);
+  for (auto f : first) ++row_[f + 1];
+  for (std::size_t i = 0; i < n; ++i) row_[i + 1] += row_[i];
+}
+
+void NeighborList::build(const ParticleStore& p, double skin) {
+  // 1. keep the history of touching pairs, by ids
+  std::vector<SavedContact> saved;
+  for (std::size_t k = 0; k < first.size(); ++k)
+    if (touching[k]) saved.push_back({ids_[first[k]], ids_[second[k]], history[k]});
+
+  const std::size_t n = p.size();
+  ids_ = p.id;
+  large_.assign(n, 0);
+  first.clear();
+  second.clear();
+  if (n == 0) {
+    history.clear();
+    touching.clear();
+    row_.assign(1, 0);
+    return;
+  }
+
+  // 2. split by size
+  std::vector<double> r = p.radius;
+  const double r_max = *std::max_element(r.begin(), r.end());
+  const std::size_t q90 = (n * 9) / 10;
+  std::nth_element(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(q90), r.end());
+  double r_ref = r[q90];
+  if (r_max <= 1.5 * r_ref) r_ref = r_max;
+  std::vector<std::uint32_t> small_set, large_set;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (p.radius[i] > r_ref) {
+      large_[i] = 1;
+      large_set.push_back(i);
+    } else {
+      small_set.push_back(i);
+    }
+  }
+  CellGrid small_grid, large_grid;
+  small_grid.build(p.x, small_set, 2 * r_ref + skin);
+  if (!large_set.empty()) large_grid.build(p.x, large_set, 2 * r_max + skin);
+
+  // 3. rows by owner slot, built in parallel chunks and concatenated in order (deterministic)
+  const int nt = max_threads();
+  std::vector<std::vector<std::uint32_t>> tf(nt), ts(nt);
+#pragma omp parallel num_threads(nt)
+  {
+    const int t = thread_id();
+    const std::size_t i0 = n * t / nt, i1 = n * (t + 1) / nt;
+    auto& F = tf[t];
+    auto& S = ts[t];
+    for (std::size_t ii = i0; ii < i1; ++ii) {
+      const auto i = static_cast<std::uint32_t>(ii);
+      const Vec3 xi = p.x[i];
+      const double ri = p.radius[i];
+      auto consider = [&](std::uint32_t j) {
+        const double cut = ri + p.radius[j] + skin;
+        if (norm2(xi - p.x[j]) < cut * cut) {
+          F.push_back(i);
+          S.push_back(j);
+        }
+      };
+      if (!large_[i]) {
+        for_cells_around(small_grid, small_grid.cell_of(xi), 1, [&](std::uint32_t j) {
+          if (j > i) consider(j);
+        });
+      } else {
+        for_cells_around(large_grid, large_grid.cell_of(xi), 1, [&](std::uint32_t j) {
+          if (j > i) consider(j);
+        });
+        const int reach =
+            static_cast<int>(std::ceil((ri + r_ref + skin) / small_grid.edge()));
+        for_cells_around(small_grid, small_grid.cell_of(xi), reach, consider);
+      }
+    }
+  }
+  std::size_t total = 0;
+  for (const auto& v : tf) total += v.size();
+  first.reserve(total);
+  second.reserve(total);
+  for (int t = 0; t < nt; ++t) {
+    first.insert(first.end(), tf[t].begin(), tf[t].end());
+    second.insert(second.end(), ts[t].begin(), ts[t].end());
+  }
+  history.assign(total, ContactHistory{});
+  touching.assign(total, 0);
+  make_rows(n);
+
+  // 4. move the history over
+  if (saved.empty()) return;
+  std::unordered_map<std::uint64_t, std::uint32_t> slot;
+  slot.reserve(n);
+  for (std::uint32_t i = 0; i < n; ++i) slot.emplace(p.id[i], i);
+  for (const auto& c : saved) {
+    auto ia = slot.find(c.a), ib = slot.find(c.b);
+    if (ia == slot.end() || ib == slot.end()) continue;  // a particle was removed
+    std::uint32_t a = ia->second, b = ib->second;
+    // owner: the large one of a mixed pair, else the smaller slot
+    const bool swap = large_[a] == large_[b] ? b < a : large_[b] != 0;
+    if (swap) std::swap(a, b);
+    for (std::uint32_t k = row_[a]; k < row_[a + 1]; ++k)
+      if (second[k] == b) {
+        history[k] = c.h;
+        if (swap) {  // the history's normal orientation follows the owner: flip vectors
+          history[k].tangential_spring = -history[k].tangential_spring;
+          history[k].rolling_spring = -history[k].rolling_spring;
+        }
+        touching[k] = 1;
+        break;
+      }
+  }
+}
+
+std::vector<std::size_t> NeighborList::cell_order(const ParticleStore& p, double cell) {
+  std::vector<std::uint32_t> all(p.size());
+  for (std::uint32_t i = 0; i < all.size(); ++i) all[i] = i;
+  CellGrid g;
+  g.build(p.x, all, cell);
+  std::vector<std::size_t> order(g.items().begin(), g.items().end());
+  return order;
+}
+
+void NeighborList::restore(std::vector<std::uint32_t> f, std::vector<std::uint32_t> s,
+                           std::vector<ContactHistory> h, std::vector<std::uint8_t> t,
+                           std::vector<std::uint64_t> ids, std::vector<std::uint8_t> large) {
+  first = std::move(f);
+  second = std::move(s);
+  history = std::move(h);
+  touching = std::move(t);
+  ids_ = std::move(ids);
+  large_ = std::move(large);
+  make_rows(ids_.size());
+}
+
+}  // namespace comminute

@@ -1,0 +1,55 @@
+#pragma once
+// Small DEM set-ups shared by the engine tests.
+#include <memory>
+
+#include "comminute/engine/simulation.hpp"
+
+namespace comminute::testing {
+
+struct DemSetup {
+  std::string law = "hertz_mindlin";
+  double restitution = 0.5;
+  double friction = 0.0;
+  double rolling_friction = 0.0;
+  double cohesion = 0.0;           // J/m3
+  double linear_stiffness = 1e5;   // N/m (linear law)
+  double youngs = 1e7, poisson = 0.3, density = 2500;
+  std::string rolling;             // "" = none
+  Vec3 gravity{0, 0, 0};
+};
+
+inline std::unique_ptr<Simulation> make_simulation(const DemSetup& s) {
+  auto sim = std::make_unique<Simulation>();
+  sim->materials.add({"m", s.density, s.youngs, s.poisson});
+  PairInput pi;
+  pi.restitution = s.restitution;
+  pi.friction = s.friction;
+  pi.rolling_friction = s.rolling_friction;
+  pi.cohesion_energy_density = s.cohesion;
+  sim->materials.set_pair(0, 0, pi);
+  ContactOptions co;
+  co.linear_normal_stiffness = s.linear_stiffness;
+  sim->law = ContactLawRegistry::create(s.law, co);
+  if (!s.rolling.empty()) sim->rolling = RollingResistanceRegistry::create(s.rolling);
+  if (s.cohesion > 0) sim->cohesion = CohesionRegistry::create("sjkr");
+  sim->gravity = s.gravity;
+  return sim;
+}
+
+inline std::uint64_t add_sphere(Simulation& sim, Vec3 x, double r, Vec3 v = {}, Vec3 w = {}) {
+  ParticleInit p;
+  p.x = x;
+  p.v = v;
+  p.w = w;
+  p.radius = r;
+  p.density = sim.materials.material(0).density;
+  return sim.particles.add(p);
+}
+
+inline std::size_t slot_of(const Simulation& sim, std::uint64_t id) {
+  for (std::size_t i = 0; i < sim.particles.size(); ++i)
+    if (sim.particles.id[i] == id) return i;
+  return static_cast<std::size_t>(-1);
+}
+
+}  // namespace comminute::testing

@@ -436,9 +436,9 @@ void Simulation::load(const Archive& a) {
   max_disp2_ = a.get_value<double>("sim/max_disp2");
   for (auto& m : modules) m->load(a);
   need_rebuild_ = false;
+  // Forces were saved with the particles, so the next step continues exactly; modules restored
+  // their own state in load() and are not set up again (a fill would insert twice).
   is_setup_ = true;
-  // Forces were saved with the particles, so the next step continues exactly.
-  for (auto& m : modules) m->setup(*this);
 }
 
 }  // namespace comminute

@@ -1,0 +1,17 @@
+#pragma once
+// Loading a DEM case for `run` and `check`: every reader takes its tables, then unknown keys are
+// rejected.
+#include <filesystem>
+
+#include "comminute/io/dem_case.hpp"
+
+namespace comminute::app {
+
+struct LoadedCase {
+  io::CaseFile file;
+  io::DemCase dem;
+};
+
+LoadedCase load_dem_case(const std::filesystem::path& path);
+
+}  // namespace comminute::app

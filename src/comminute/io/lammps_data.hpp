@@ -1,0 +1,14 @@
+#pragma once
+// Reads spheres from a LAMMPS-style granular data file ("Atoms" lines `id type diameter density
+// x y z`, optional "Velocities" lines `id vx vy vz wx wy wz`), the format of the peer benchmark
+// inputs in shared/bench/peers/data.
+#include <filesystem>
+#include <vector>
+
+#include "comminute/particles/particle_store.hpp"
+
+namespace comminute::io {
+
+std::vector<ParticleInit> read_lammps_data(const std::filesystem::path& file);
+
+}  // namespace comminute::io

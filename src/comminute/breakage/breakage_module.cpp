@@ -38,13 +38,13 @@ void BreakageModule::setup(Simulation& sim) {
   auto& p = sim.particles;
   for (auto& m : materials_)
     if (m) m->criterion->attach(p);
-  f_init_ = p.add_field("breakage.initialized", 0.0);     // 1 once strength is drawn
+  f_init_ = p.add_field("breakage.initialized", 0.0);  // 1 once strength is drawn
   f_generation_ = p.add_field("breakage.generation", 0.0);
   f_target_ = p.add_field("breakage.target_radius", 0.0);  // m, final radius while growing
   f_in_event_ = p.add_field("breakage.in_event", 0.0);
-  f_energy_ = p.add_field("breakage.event_energy", 0.0);   // J/kg
-  f_force_ = p.add_field("breakage.event_force", 0.0);     // N
-  f_baseline_ = p.add_field("breakage.baseline", 0.0);     // J/kg
+  f_energy_ = p.add_field("breakage.event_energy", 0.0);  // J/kg
+  f_force_ = p.add_field("breakage.event_force", 0.0);    // N
+  f_baseline_ = p.add_field("breakage.baseline", 0.0);    // J/kg
   f_quiet_ = p.add_field("breakage.quiet_steps", 0.0);
   n_materials_ = sim.materials.size();
   materials_.resize(std::max(materials_.size(), n_materials_));
@@ -118,8 +118,8 @@ void BreakageModule::grow(Simulation& sim) {
       for (const auto& c : found)  // distance to the wall = r - overlap; keep overlap <= eps r
         limit[i] = std::min(limit[i], (p.radius[i] - c.overlap) / (1.0 - eps));
     }
-    const double r_new =
-        std::min({target[i], p.radius[i] + opt_.growth_step * target[i], std::max(p.radius[i], limit[i])});
+    const double r_new = std::min(
+        {target[i], p.radius[i] + opt_.growth_step * target[i], std::max(p.radius[i], limit[i])});
     grown = std::max(grown, r_new - p.radius[i]);
     p.radius[i] = r_new;
     if (r_new >= target[i]) {
@@ -143,7 +143,9 @@ void BreakageModule::grow(Simulation& sim) {
   }
 }
 
-void BreakageModule::post_force(Simulation& sim) { update_events(sim); }
+void BreakageModule::post_force(Simulation& sim) {
+  update_events(sim);
+}
 
 void BreakageModule::update_events(Simulation& sim) {
   auto& p = sim.particles;
@@ -191,6 +193,7 @@ void BreakageModule::update_events(Simulation& sim) {
         r.material = p.material[i];
         r.generation = static_cast<std::uint32_t>(p.field(f_generation_)[i]);
         r.diameter = d;
+        r.mass = p.mass[i];
         r.specific_energy = energy[i];
         r.peak_force = force[i];
         r.strength = crit.strength(p, i, d);
@@ -232,6 +235,7 @@ void BreakageModule::update_events(Simulation& sim) {
       r.material = p.material[i];
       r.generation = static_cast<std::uint32_t>(p.field(f_generation_)[i]);
       r.diameter = d;
+      r.mass = p.mass[i];
       r.specific_energy = energy[i];
       r.peak_force = force[i];
       r.strength = crit.strength(p, i, d);
@@ -366,8 +370,8 @@ void BreakageModule::replace(Simulation& sim, std::size_t parent, std::vector<Sp
   std::vector<Vec3> xs;
   for (const auto& s : placed) xs.push_back(s.x);
   const double released = mat.release_fraction * rec.specific_energy * mass;
-  const auto vel = fragment_velocities(p.x[parent], p.v[parent], p.w[parent], p.inertia[parent],
-                                       xs, masses, inertia, released);
+  const auto vel = fragment_velocities(p.x[parent], p.v[parent], p.w[parent], p.inertia[parent], xs,
+                                       masses, inertia, released);
   // Energy bookkeeping: kinetic energy of the parent out, of the fragments in; fines booked as
   // mass leave with their kinetic and gravitational potential energy.
   double ke_out = 0.5 * mass * norm2(p.v[parent]) + 0.5 * p.inertia[parent] * norm2(p.w[parent]);
@@ -377,7 +381,8 @@ void BreakageModule::replace(Simulation& sim, std::size_t parent, std::vector<Sp
   const std::uint32_t generation = static_cast<std::uint32_t>(p.field(f_generation_)[parent]) + 1;
   // Fields of the parent (composition and the like are inherited).
   std::vector<double> parent_fields;
-  for (std::size_t k = 0; k < p.field_names().size(); ++k) parent_fields.push_back(p.field(k)[parent]);
+  for (std::size_t k = 0; k < p.field_names().size(); ++k)
+    parent_fields.push_back(p.field(k)[parent]);
   p.flags[parent] |= pflag::remove;
   for (std::size_t k = 0; k < placed.size(); ++k) {
     const Fragment& f = progeny.fragments[k];
@@ -402,8 +407,10 @@ void BreakageModule::replace(Simulation& sim, std::size_t parent, std::vector<Sp
     initialize_particle(sim, s);  // every fragment draws its own strength for its size
     if (growing) ++pending_;
     ke_in += 0.5 * f.mass * norm2(vel.v[k]) + 0.5 * inertia[k] * norm2(vel.w[k]);
-    if (f.fines) ++rec.fines_particles;
-    else ++rec.fragments;
+    if (f.fines)
+      ++rec.fines_particles;
+    else
+      ++rec.fragments;
   }
   if (progeny.fines_mass > 0) {
     fines_mass_[material] += progeny.fines_mass;
@@ -440,16 +447,17 @@ void BreakageModule::write_outputs() const {
   {
     AtomicFile f(opt_.output_dir / "breakage_events.csv");
     auto& o = f.stream();
-    o << "time_s,parent_id,material,generation,diameter_m,specific_energy_J_per_kg,peak_force_N,"
+    o << "time_s,parent_id,material,generation,diameter_m,mass_kg,specific_energy_J_per_kg,peak_"
+         "force_N,"
          "strength,strength_unit,damage_before,broken,fragments,fines_particles,fines_mass_kg,"
          "t10_percent\n";
     for (const auto& r : log_) {
       const auto& m = materials_[r.material];
-      o << fmt::format("{:.9g},{},{},{},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{},{},{},{:.9g},{:.9g}\n",
-                       r.time, r.parent_id, r.material, r.generation, r.diameter,
-                       r.specific_energy, r.peak_force, r.strength,
-                       m ? m->criterion->strength_unit() : "", r.damage_before, r.broken,
-                       r.fragments, r.fines_particles, r.fines_mass, r.t10);
+      o << fmt::format(
+          "{:.9g},{},{},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{},{},{},{:.9g},{:.9g}\n",
+          r.time, r.parent_id, r.material, r.generation, r.diameter, r.mass, r.specific_energy,
+          r.peak_force, r.strength, m ? m->criterion->strength_unit() : "", r.damage_before,
+          r.broken, r.fragments, r.fines_particles, r.fines_mass, r.t10);
     }
     f.commit();
   }
@@ -461,12 +469,12 @@ void BreakageModule::write_outputs() const {
          "momentum_y_kg_m_per_s,momentum_z_kg_m_per_s,fines_momentum_x_kg_m_per_s,"
          "fines_momentum_y_kg_m_per_s,fines_momentum_z_kg_m_per_s\n";
     for (const auto& r : ledger_)
-      o << fmt::format("{:.9g},{},{},{},{},{:.12g},{:.12g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},"
-                       "{:.9g},{:.9g}\n",
-                       r.time, r.events, r.breakages, r.pending, r.particles, r.particle_mass,
-                       r.fines_mass, r.removed_total, r.breakage_removed, r.momentum.x,
-                       r.momentum.y, r.momentum.z, r.fines_momentum.x, r.fines_momentum.y,
-                       r.fines_momentum.z);
+      o << fmt::format(
+          "{:.9g},{},{},{},{},{:.12g},{:.12g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},"
+          "{:.9g},{:.9g}\n",
+          r.time, r.events, r.breakages, r.pending, r.particles, r.particle_mass, r.fines_mass,
+          r.removed_total, r.breakage_removed, r.momentum.x, r.momentum.y, r.momentum.z,
+          r.fines_momentum.x, r.fines_momentum.y, r.fines_momentum.z);
     f.commit();
   }
 }

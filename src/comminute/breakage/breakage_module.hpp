@@ -33,31 +33,32 @@ namespace comminute::breakage {
 struct MaterialBreakage {
   std::unique_ptr<BreakageCriterion> criterion;
   T10Model progeny{default_t10()};
-  double reference_energy = -1;     // J/kg, E50b for t10 when the criterion has no median
-  double min_breakable_size = 0;    // m, smaller particles never break
-  double min_fragment_size = 0;     // m, smaller fragments become fines
-  double min_fragment_ratio = 0.05; // fragments below this fraction of the parent diameter: fines
+  double reference_energy = -1;      // J/kg, E50b for t10 when the criterion has no median
+  double min_breakable_size = 0;     // m, smaller particles never break
+  double min_fragment_size = 0;      // m, smaller fragments become fines
+  double min_fragment_ratio = 0.05;  // fragments below this fraction of the parent diameter: fines
   FinesRule fines = FinesRule::particles;
-  double release_fraction = 0;      // eta: fraction of the absorbed energy given as radial speed
+  double release_fraction = 0;  // eta: fraction of the absorbed energy given as radial speed
   static T10Parameters default_t10();
 };
 
 struct BreakageOptions {
   PlacementOptions placement;
-  double growth_step = 0.005;  // largest radius increment per step, fraction of the final radius
-  int event_end_steps = 20;    // steps without new loading that end a stressing event
-  bool log_all_events = false; // also log events that did not break (probability plots)
+  double growth_step = 0.005;   // largest radius increment per step, fraction of the final radius
+  int event_end_steps = 20;     // steps without new loading that end a stressing event
+  bool log_all_events = false;  // also log events that did not break (probability plots)
   std::filesystem::path output_dir;  // event log and ledger; empty = no files
-  double output_interval = 0;  // s between ledger rows / file rewrites (0: every 1000 steps)
+  double output_interval = 0;        // s between ledger rows / file rewrites (0: every 1000 steps)
 };
 
 // One row of the event log (SI units; strength in the criterion's unit).
 struct EventRecord {
-  double time = 0;               // s
+  double time = 0;  // s
   std::uint64_t parent_id = 0;
   std::uint32_t material = 0;
   std::uint32_t generation = 0;  // 0 for particles of the initial set
   double diameter = 0;           // m
+  double mass = 0;               // kg, of the parent
   double specific_energy = 0;    // J/kg absorbed in the event
   double peak_force = 0;         // N
   double strength = 0;           // J/kg (energy criteria) or N (force criteria) before the event
@@ -65,8 +66,8 @@ struct EventRecord {
   std::uint32_t broken = 0;      // 1 if it broke
   std::uint32_t fragments = 0;   // resolved fragments
   std::uint32_t fines_particles = 0;
-  double fines_mass = 0;         // kg booked as mass
-  double t10 = 0;                // %
+  double fines_mass = 0;  // kg booked as mass
+  double t10 = 0;         // %
 };
 
 class BreakageModule final : public Module {
@@ -114,8 +115,8 @@ class BreakageModule final : public Module {
   // field indices
   std::size_t f_init_ = 0, f_generation_ = 0, f_target_ = 0, f_in_event_ = 0, f_energy_ = 0,
               f_force_ = 0, f_baseline_ = 0, f_quiet_ = 0;
-  std::vector<double> load_, force_;                       // per slot, scratch
-  std::vector<std::uint64_t> broken_ids_;                  // found in post_force
+  std::vector<double> load_, force_;       // per slot, scratch
+  std::vector<std::uint64_t> broken_ids_;  // found in post_force
   std::vector<EventRecord> broken_records_;
   Rng strength_rng_, placement_rng_;
   std::size_t pending_ = 0;

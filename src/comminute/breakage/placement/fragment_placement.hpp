@@ -47,8 +47,10 @@ struct FragmentVelocities {
 // inertia I_i about their own centres) replacing a parent with velocity v_p, spin w_p and moment
 // of inertia I_p: rigid-body motion v_i = v_p + w x (x_i - x_p), w_i = w, where w solves
 // (J_orbit + sum I_i) w = I_p w_p so that angular momentum is conserved exactly; plus an optional
-// radial release dv_i = c (x_i - x_p) with sum m_i dv_i = 0 and sum m_i |dv_i|^2 / 2 = released
-// (J). Linear momentum sum m_i v_i = m_p v_p holds to rounding (the residual is removed).
+// radial release dv_i = c (n_i - <n>) (n_i unit direction from the parent centre, <n> its mass
+// mean) with sum m_i dv_i = 0 and sum m_i |dv_i|^2 / 2 = released (J) — or less when one
+// off-centre fragment dominates the family (see the .cpp: speeds stay below 2 sqrt(8 released/M)).
+// Linear momentum sum m_i v_i = m_p v_p holds to rounding (the residual is removed).
 FragmentVelocities fragment_velocities(const Vec3& x_p, const Vec3& v_p, const Vec3& w_p,
                                        double inertia_p, const std::vector<Vec3>& x,
                                        const std::vector<double>& m,

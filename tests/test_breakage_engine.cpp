@@ -90,7 +90,7 @@ struct CompressionRun {
 };
 
 // A bed of weak particles (lattice, no gravity) squeezed by a platen moving down at v_platen in
-// an open-topped box, until the bed is compressed to 45 % of its height.
+// an open-topped box, until the platen has moved 62 % of the bed height.
 const CompressionRun& compression() {
   static const CompressionRun run = [] {
     CompressionRun out;
@@ -111,7 +111,7 @@ const CompressionRun& compression() {
     sim->walls.push_back(std::move(platen));
     const double eta = 0.05, eps = 0.01;
     std::vector<std::optional<breakage::MaterialBreakage>> mats;
-    mats.emplace_back(weak_material(2.0, 0.5, 0.0008, 0.3, breakage::FinesRule::mass, eta));
+    mats.emplace_back(weak_material(2.0, 0.5, 0.0005, 0.3, breakage::FinesRule::mass, eta));
     breakage::BreakageOptions opt;
     opt.placement.overlap_ratio = eps;
     auto mod = std::make_unique<breakage::BreakageModule>(std::move(mats), opt);
@@ -122,10 +122,10 @@ const CompressionRun& compression() {
     sim->modules.push_back(std::move(mod));
     sim->modules.push_back(std::make_unique<ProbeAfter>(&out.probe, eta));
     sim->modules.push_back(std::move(speed));
-    const double g = 1e7 / 2.6, r_min = 0.3 * 0.0008 / 2;
+    const double g = 1e7 / 2.6, r_min = 0.3 * 0.0005 / 2;
     sim->dt = 0.2 * 3.14159 * r_min * std::sqrt(2500 / g) / (0.1631 * 0.3 + 0.8766);
     sim->setup();
-    const auto steps = static_cast<std::uint64_t>(0.55 * L / v_platen / sim->dt);
+    const auto steps = static_cast<std::uint64_t>(0.62 * L / v_platen / sim->dt);
     for (std::uint64_t k = 0; k < steps; ++k) sim->step();
     out.max_speed = sp->max_speed;
     out.breakages = out.probe.module->breakages();

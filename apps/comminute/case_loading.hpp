@@ -4,12 +4,14 @@
 #include <filesystem>
 
 #include "comminute/io/dem_case.hpp"
+#include "comminute/io/output_case.hpp"
 
 namespace comminute::app {
 
 struct LoadedCase {
   io::CaseFile file;
   io::DemCase dem;
+  io::OutputOptions output;  // [output], or the defaults when the table is absent
 };
 
 LoadedCase load_dem_case(const std::filesystem::path& path);

@@ -25,9 +25,10 @@ class EpsdRolling final : public RollingResistance {
     const double limit = p.rolling_friction * r * std::abs(out.normal_force);
     const double mm = norm(m);
     if (mm > limit) {
-      const double before = kr > 0 ? 0.5 * mm * mm / kr : 0.0;
+      // full mobilisation: the torque does work |M| |rolling slip|, slip = (M_trial - M) / k_r
+      const Vec3 trial = m;
       m *= limit / mm;
-      out.friction_dissipation += before - (kr > 0 ? 0.5 * limit * limit / kr : 0.0);
+      if (kr > 0) out.friction_dissipation += limit * norm(trial - m) / kr;
       h.rolling_spring = m;
       out.rolling_torque += m;
       return;

@@ -10,12 +10,19 @@
 
 namespace comminute {
 
+namespace {
+// Below this many particles (pairs: twice as many) loops run serially: an OpenMP region costs
+// microseconds, more than the work of a small system.
+constexpr std::size_t kParallelMin = 4096;
+}  // namespace
+
 Simulation::Simulation() = default;
 Simulation::~Simulation() = default;
 
 void Simulation::setup() {
   if (!law) throw Error("simulation has no contact law");
   if (!(dt > 0)) throw Error("simulation time step is not set");
+  flush_denormals_to_zero();
   for (auto& m : modules) m->setup(*this);
   is_setup_ = true;
   need_rebuild_ = true;
@@ -38,34 +45,49 @@ void Simulation::run(std::uint64_t n) {
   for (std::uint64_t s = 0; s < n; ++s) step();
 }
 
-void Simulation::kick(double h) {
-  auto& p = particles;
-  const std::size_t n = p.size();
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    if (p.flags[i] & pflag::fixed) continue;
-    p.v[i] += (h / p.mass[i]) * p.f[i];
-    p.w[i] += (h / p.inertia[i]) * p.t[i];
-  }
-}
-
-double Simulation::drift() {
+void Simulation::kick_drift() {
+  // first half kick, drift, and the start of the force accumulation (gravity) in one pass
   auto& p = particles;
   const std::size_t n = p.size();
   const bool track = x_at_build_.size() == n;
+  const double h = 0.5 * dt;
+  const Vec3 g = gravity;
   double worst = 0;
-#pragma omp parallel for schedule(static) reduction(max : worst)
+#pragma omp parallel for schedule(static) reduction(max : worst) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
-    if (!(p.flags[i] & pflag::fixed)) p.x[i] += dt * p.v[i];
+    if (!(p.flags[i] & pflag::fixed)) {
+      p.v[i] += (h / p.mass[i]) * p.f[i];
+      p.w[i] += (h / p.inertia[i]) * p.t[i];
+      p.x[i] += dt * p.v[i];
+    }
+    p.f[i] = p.mass[i] * g;
+    p.t[i] = {};
     if (track) worst = std::max(worst, norm2(p.x[i] - x_at_build_[i]));
   }
-  return track ? worst : std::numeric_limits<double>::infinity();
+  max_disp2_ = track ? worst : std::numeric_limits<double>::infinity();
+  forces_cleared_ = true;
+}
+
+bool Simulation::kick() {
+  // second half kick; reports whether any particle state became non-finite
+  auto& p = particles;
+  const std::size_t n = p.size();
+  const double h = 0.5 * dt;
+  bool bad = false;
+#pragma omp parallel for schedule(static) reduction(|| : bad) if (n >= kParallelMin)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(p.flags[i] & pflag::fixed)) {
+      p.v[i] += (h / p.mass[i]) * p.f[i];
+      p.w[i] += (h / p.inertia[i]) * p.t[i];
+    }
+    bad = bad || !is_finite(p.x[i]) || !is_finite(p.v[i]) || !is_finite(p.w[i]);
+  }
+  return bad;
 }
 
 void Simulation::step() {
   if (!is_setup_) setup();
-  kick(0.5 * dt);
-  max_disp2_ = drift();
+  kick_drift();
   for (std::size_t k = 0; k < walls.size(); ++k) {
     walls[k]->advance(dt);
     wall_travel_[k] += norm(walls[k]->kinematics.velocity) * dt;
@@ -74,21 +96,15 @@ void Simulation::step() {
   for (auto& m : modules) m->pre_force(*this);
   compute_forces();
   for (auto& m : modules) m->post_force(*this);
-  kick(0.5 * dt);
+  const bool bad = kick();
   ++step_count;
-  check_finite();
+  if (bad) report_non_finite();
   for (auto& m : modules) m->end_of_step(*this);
 }
 
-void Simulation::check_finite() const {
+void Simulation::report_non_finite() const {
   const auto& p = particles;
-  bool bad = false;
-  const std::size_t n = p.size();
-#pragma omp parallel for schedule(static) reduction(|| : bad)
-  for (std::size_t i = 0; i < n; ++i)
-    bad = bad || !is_finite(p.x[i]) || !is_finite(p.v[i]) || !is_finite(p.w[i]);
-  if (!bad) return;
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t i = 0; i < p.size(); ++i)
     if (!is_finite(p.x[i]) || !is_finite(p.v[i]) || !is_finite(p.w[i]))
       throw SimulationError(fmt::format(
           "particle id {} has a non-finite position/velocity at t = {:.9g} s (step {}): x = ({}, "
@@ -96,6 +112,7 @@ void Simulation::check_finite() const {
           "invalid",
           p.id[i], time, step_count, p.x[i].x, p.x[i].y, p.x[i].z, p.v[i].x, p.v[i].y, p.v[i].z,
           dt));
+  throw SimulationError(fmt::format("non-finite particle state at t = {:.9g} s", time));
 }
 
 void Simulation::rebuild() {
@@ -160,11 +177,14 @@ void Simulation::compute_forces() {
   if (need_rebuild_) rebuild();
   auto& p = particles;
   const std::size_t n = p.size();
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    p.f[i] = p.mass[i] * gravity;
-    p.t[i] = {};
+  if (!forces_cleared_) {  // set-up, or particles inserted/removed after kick_drift()
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+    for (std::size_t i = 0; i < n; ++i) {
+      p.f[i] = p.mass[i] * gravity;
+      p.t[i] = {};
+    }
   }
+  forces_cleared_ = false;
   for (auto& w : walls) {
     w->force = {};
     w->torque = {};
@@ -185,7 +205,7 @@ void Simulation::reduce_thread_buffers() {
   const std::size_t n = p.size();
   const std::size_t nb = thread_force_.size();
   if (nb == 0) return;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t b = 0; b < nb; ++b) {
       p.f[i] += thread_force_[b][i];
@@ -196,11 +216,11 @@ void Simulation::reduce_thread_buffers() {
 void Simulation::particle_particle_forces() {
   auto& p = particles;
   const std::size_t n = p.size();
-  const int nt = max_threads();
+  const std::size_t npairs = nlist_.size();
+  const int nt = npairs >= 2 * kParallelMin ? max_threads() : 1;
   thread_force_.resize(static_cast<std::size_t>(nt - 1));
   thread_torque_.resize(static_cast<std::size_t>(nt - 1));
   std::vector<ThreadTally> tally(static_cast<std::size_t>(nt));
-  const std::size_t npairs = nlist_.size();
   const ContactLaw& contact_law = *law;
 #pragma omp parallel num_threads(nt)
   {
@@ -432,6 +452,7 @@ void Simulation::load(const Archive& a) {
   options.skin = a.get_value<double>("sim/skin");
   rebuilds_ = a.get_value<std::uint64_t>("sim/rebuilds");
   ledger = a.get_value<EnergyLedger>("sim/ledger");
+  flush_denormals_to_zero();
   elastic_energy_ = a.get_value<double>("sim/elastic");
   max_disp2_ = a.get_value<double>("sim/max_disp2");
   for (auto& m : modules) m->load(a);

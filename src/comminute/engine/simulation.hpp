@@ -78,7 +78,10 @@ class Simulation {
   void run(std::uint64_t n);
   void step();
   // Forces the neighbour list to be rebuilt before the next force computation.
-  void particles_changed() { need_rebuild_ = true; }
+  void particles_changed() {
+    need_rebuild_ = true;
+    forces_cleared_ = false;
+  }
 
   const NeighborList& pairs() const { return nlist_; }
   NeighborList& pairs() { return nlist_; }
@@ -98,9 +101,9 @@ class Simulation {
   void rebuild();
   void build_wall_candidates();
   void reduce_thread_buffers();
-  void kick(double half_dt);
-  double drift();  // returns the largest squared displacement since the last build
-  void check_finite() const;
+  void kick_drift();
+  bool kick();
+  [[noreturn]] void report_non_finite() const;
 
   NeighborList nlist_;
   std::vector<WallContactRecord> wall_candidates_;  // near walls at the last build, with history
@@ -110,6 +113,7 @@ class Simulation {
   std::vector<Vec3> x_at_build_;
   std::vector<std::vector<Vec3>> thread_force_, thread_torque_;  // threads 1.. (0 writes p.f)
   bool need_rebuild_ = true;
+  bool forces_cleared_ = false;
   bool is_setup_ = false;
   std::uint64_t rebuilds_ = 0;
   double elastic_energy_ = 0;

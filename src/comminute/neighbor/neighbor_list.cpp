@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 #include "comminute/core/parallel.hpp"
 #include "comminute/neighbor/cell_grid.hpp"
@@ -10,11 +9,6 @@
 namespace comminute {
 
 namespace {
-
-struct SavedContact {
-  std::uint64_t a, b;  // ids of owner and other
-  ContactHistory h;
-};
 
 // Visits the particles in the cells within `reach` cells of cell c.
 template <class F>
@@ -40,7 +34,10 @@ void NeighborList::make_rows(std::size_t n) {
 
 void NeighborList::build(const ParticleStore& p, double skin) {
   // 1. keep the history of touching pairs, by ids
-  std::vector<SavedContact> saved;
+  // (scratch arrays are members: reusing their capacity keeps the heap from growing with
+  // every rebuild)
+  auto& saved = saved_;
+  saved.clear();
   for (std::size_t k = 0; k < first.size(); ++k)
     if (touching[k]) saved.push_back({ids_[first[k]], ids_[second[k]], history[k]});
 
@@ -77,14 +74,19 @@ void NeighborList::build(const ParticleStore& p, double skin) {
   if (!large_set.empty()) large_grid.build(p.x, large_set, 2 * r_max + skin);
 
   // 3. rows by owner slot, built in parallel chunks and concatenated in order (deterministic)
-  const int nt = max_threads();
-  std::vector<std::vector<std::uint32_t>> tf(nt), ts(nt);
+  const int nt = n >= 4096 ? max_threads() : 1;  // small systems: a thread team costs more
+  auto& tf = thread_first_;
+  auto& ts = thread_second_;
+  tf.resize(static_cast<std::size_t>(nt));
+  ts.resize(static_cast<std::size_t>(nt));
 #pragma omp parallel num_threads(nt)
   {
     const int t = thread_id();
     const std::size_t i0 = n * t / nt, i1 = n * (t + 1) / nt;
-    auto& F = tf[t];
-    auto& S = ts[t];
+    auto& F = nt == 1 ? first : tf[t];
+    auto& S = nt == 1 ? second : ts[t];
+    F.clear();
+    S.clear();
     for (std::size_t ii = i0; ii < i1; ++ii) {
       const auto i = static_cast<std::uint32_t>(ii);
       const Vec3 xi = p.x[i];
@@ -110,13 +112,23 @@ void NeighborList::build(const ParticleStore& p, double skin) {
       }
     }
   }
-  std::size_t total = 0;
-  for (const auto& v : tf) total += v.size();
-  first.reserve(total);
-  second.reserve(total);
-  for (int t = 0; t < nt; ++t) {
-    first.insert(first.end(), tf[t].begin(), tf[t].end());
-    second.insert(second.end(), ts[t].begin(), ts[t].end());
+  if (nt > 1) {
+    std::size_t total = 0;
+    for (const auto& v : tf) total += v.size();
+    first.resize(total);
+    second.resize(total);
+    std::size_t at = 0;
+    for (int t = 0; t < nt; ++t) {
+      std::copy(tf[t].begin(), tf[t].end(), first.begin() + static_cast<std::ptrdiff_t>(at));
+      std::copy(ts[t].begin(), ts[t].end(), second.begin() + static_cast<std::ptrdiff_t>(at));
+      at += tf[t].size();
+    }
+  }
+  const std::size_t total = first.size();
+  if (history.capacity() < total) {
+    // grow without holding old and new at once (the touching histories are in `saved`)
+    std::vector<ContactHistory>().swap(history);
+    history.reserve(total + total / 8);
   }
   history.assign(total, ContactHistory{});
   touching.assign(total, 0);
@@ -124,13 +136,20 @@ void NeighborList::build(const ParticleStore& p, double skin) {
 
   // 4. move the history over
   if (saved.empty()) return;
-  std::unordered_map<std::uint64_t, std::uint32_t> slot;
-  slot.reserve(n);
-  for (std::uint32_t i = 0; i < n; ++i) slot.emplace(p.id[i], i);
+  // slot of each id: a sorted (id, slot) table
+  auto& slot = slot_of_id_;
+  slot.resize(n);
+  for (std::uint32_t i = 0; i < n; ++i) slot[i] = {p.id[i], i};
+  std::sort(slot.begin(), slot.end());
+  auto find_slot = [&slot](std::uint64_t id, std::uint32_t& out) {
+    auto it = std::lower_bound(slot.begin(), slot.end(), std::make_pair(id, std::uint32_t{0}));
+    if (it == slot.end() || it->first != id) return false;
+    out = it->second;
+    return true;
+  };
   for (const auto& c : saved) {
-    auto ia = slot.find(c.a), ib = slot.find(c.b);
-    if (ia == slot.end() || ib == slot.end()) continue;  // a particle was removed
-    std::uint32_t a = ia->second, b = ib->second;
+    std::uint32_t a = 0, b = 0;
+    if (!find_slot(c.a, a) || !find_slot(c.b, b)) continue;  // a particle was removed
     // owner: the large one of a mixed pair, else the smaller slot
     const bool swap = large_[a] == large_[b] ? b < a : large_[b] != 0;
     if (swap) std::swap(a, b);

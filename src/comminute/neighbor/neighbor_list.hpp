@@ -9,6 +9,7 @@
 // stencil; the few larger ones live in a second grid of edge 2 r_max + skin, and each of them
 // scans the small-particle grid over its own reach. Work stays ~linear for a size ratio of 10.
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "comminute/contact/contact_law.hpp"
@@ -42,6 +43,14 @@ class NeighborList {
   std::vector<std::uint64_t> ids_;    // p.id at build
   std::vector<std::uint8_t> large_;   // 1 for particles in the large-particle grid
   std::vector<std::uint32_t> row_;    // CSR offsets of rows by owner slot (size n+1)
+  // scratch reused between builds
+  struct SavedContact {
+    std::uint64_t a, b;  // ids of owner and other
+    ContactHistory h;
+  };
+  std::vector<SavedContact> saved_;
+  std::vector<std::vector<std::uint32_t>> thread_first_, thread_second_;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> slot_of_id_;
   void make_rows(std::size_t n);
 };
 

@@ -34,8 +34,7 @@ BreakageModule::~BreakageModule() {
   }
 }
 
-void BreakageModule::setup(Simulation& sim) {
-  auto& p = sim.particles;
+void BreakageModule::register_fields(ParticleStore& p) {
   for (auto& m : materials_)
     if (m) m->criterion->attach(p);
   f_init_ = p.add_field("breakage.initialized", 0.0);  // 1 once strength is drawn
@@ -46,6 +45,11 @@ void BreakageModule::setup(Simulation& sim) {
   f_force_ = p.add_field("breakage.event_force", 0.0);    // N
   f_baseline_ = p.add_field("breakage.baseline", 0.0);    // J/kg
   f_quiet_ = p.add_field("breakage.quiet_steps", 0.0);
+}
+
+void BreakageModule::setup(Simulation& sim) {
+  auto& p = sim.particles;
+  register_fields(p);
   n_materials_ = sim.materials.size();
   materials_.resize(std::max(materials_.size(), n_materials_));
   share_.assign(n_materials_ * n_materials_, 0.5);
@@ -80,7 +84,36 @@ void BreakageModule::initialize_particle(Simulation& sim, std::size_t i) {
   m->criterion->initialize(p, i, 2 * (target > 0 ? target : p.radius[i]), strength_rng_);
 }
 
+namespace {
+// Normal elastic energy (J) of a fresh contact with overlap `overlap` between sphere i and a
+// sphere j (r_j > 0) or a wall (r_j = 0), from the simulation's contact law.
+double overlap_energy(const Simulation& sim, double overlap, double r_i, double m_i,
+                      std::uint16_t a, double r_j, double m_j, std::uint16_t b) {
+  if (overlap <= 0) return 0.0;
+  ContactKinematics ck;
+  ck.normal = {0, 0, 1};
+  ck.overlap = overlap;
+  ck.effective_radius = r_j > 0 ? r_i * r_j / (r_i + r_j) : r_i;
+  ck.effective_mass = m_j > 0 ? m_i * m_j / (m_i + m_j) : m_i;
+  ck.dt = 0;
+  ContactHistory h;
+  ContactForces out;
+  sim.law->compute(ck, sim.materials.pair(a, b), h, out);
+  return out.normal_elastic_energy;
+}
+}  // namespace
+
+void BreakageModule::add_energy(Simulation& sim, double joules) {
+  created_ += joules;
+  removed_ -= joules;
+  sim.ledger.removed -= joules;
+}
+
 void BreakageModule::pre_force(Simulation& sim) {
+  // After a replacement the pair list refers to the old slots until the engine rebuilds it (in
+  // this step's force computation): growth waits one step then.
+  if (list_stale_ && sim.neighbor_rebuilds() == rebuilds_at_replacement_) return;
+  list_stale_ = false;
   if (pending_ > 0) grow(sim);
 }
 
@@ -110,6 +143,9 @@ void BreakageModule::grow(Simulation& sim) {
   }
   std::vector<WallContact> found;
   double grown = 0;
+  std::vector<std::uint8_t> was_growing(n, 0);
+  for (std::size_t i = 0; i < n; ++i) was_growing[i] = (p.flags[i] & pflag::growing) ? 1 : 0;
+  std::vector<double> r_before = p.radius;
   for (std::size_t i = 0; i < n; ++i) {
     if (!(p.flags[i] & pflag::growing)) continue;
     for (const auto& w : sim.walls) {
@@ -130,6 +166,34 @@ void BreakageModule::grow(Simulation& sim) {
       --pending_;
     }
   }
+  // Growth at fixed positions raises the overlaps of the growing spheres: that elastic energy
+  // comes from nowhere, so it is booked (as negative removed energy) to keep the balance closed.
+  double created = 0;
+  for (std::size_t k = 0; k < nl.size(); ++k) {
+    const std::uint32_t i = nl.first[k], j = nl.second[k];
+    if (!was_growing[i] && !was_growing[j]) continue;
+    const double dist = norm(p.x[i] - p.x[j]);
+    const double before = r_before[i] + r_before[j] - dist,
+                 after = p.radius[i] + p.radius[j] - dist;
+    if (after <= 0) continue;
+    created += overlap_energy(sim, after, p.radius[i], p.mass[i], p.material[i], p.radius[j],
+                              p.mass[j], p.material[j]) -
+               overlap_energy(sim, before, r_before[i], p.mass[i], p.material[i], r_before[j],
+                              p.mass[j], p.material[j]);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!was_growing[i] || p.radius[i] == r_before[i]) continue;
+    for (const auto& w : sim.walls) {
+      found.clear();
+      w->contacts(p.x[i], p.radius[i], 0.0, found);
+      for (const auto& c : found)
+        created += overlap_energy(sim, c.overlap, p.radius[i], p.mass[i], p.material[i], 0, 0,
+                                  w->material) -
+                   overlap_energy(sim, c.overlap - (p.radius[i] - r_before[i]), r_before[i],
+                                  p.mass[i], p.material[i], 0, 0, w->material);
+    }
+  }
+  add_energy(sim, created);
   // The neighbour list holds pairs within r_i + r_j + skin at its build: growth eats that margin,
   // so ask for a rebuild once a fragment has grown by a tenth of the skin since the last one.
   if (sim.neighbor_rebuilds() != rebuilds_seen_) {
@@ -282,14 +346,14 @@ void BreakageModule::end_of_step(Simulation& sim) {
     const std::unordered_set<std::uint64_t> wanted(broken_ids_.begin(), broken_ids_.end());
     for (std::size_t i = 0; i < p.size(); ++i)
       if (wanted.count(p.id[i])) slot_of[p.id[i]] = i;
-    std::unordered_map<std::size_t, std::vector<Sphere>> around;
+    std::unordered_map<std::size_t, std::vector<std::uint32_t>> around;
     const auto& nl = sim.pairs();
     for (std::size_t k = 0; k < nl.size(); ++k) {
       const std::uint32_t i = nl.first[k], j = nl.second[k];
       const bool bi = wanted.count(p.id[i]) > 0, bj = wanted.count(p.id[j]) > 0;
       if (!bi && !bj) continue;
-      if (bi) around[i].push_back({p.x[j], p.radius[j]});
-      if (bj) around[j].push_back({p.x[i], p.radius[i]});
+      if (bi) around[i].push_back(j);
+      if (bj) around[j].push_back(i);
       if (nl.touching[k]) {  // elastic energy that disappears with the parent's contacts
         const Vec3 dx = p.x[i] - p.x[j];
         const double dist = norm(dx);
@@ -321,6 +385,8 @@ void BreakageModule::end_of_step(Simulation& sim) {
     }
     p.compact();
     sim.particles_changed();
+    list_stale_ = true;
+    rebuilds_at_replacement_ = sim.neighbor_rebuilds();
     broken_ids_.clear();
     broken_records_.clear();
   }
@@ -332,9 +398,11 @@ void BreakageModule::end_of_step(Simulation& sim) {
   }
 }
 
-void BreakageModule::replace(Simulation& sim, std::size_t parent, std::vector<Sphere>& neighbours,
-                             const EventRecord& rec_in) {
+void BreakageModule::replace(Simulation& sim, std::size_t parent,
+                             const std::vector<std::uint32_t>& around, const EventRecord& rec_in) {
   auto& p = sim.particles;
+  std::vector<Sphere> neighbours;
+  for (std::uint32_t j : around) neighbours.push_back({p.x[j], p.radius[j]});
   const MaterialBreakage& mat = *materials_[p.material[parent]];
   EventRecord rec = rec_in;
   const double d = 2 * p.radius[parent];
@@ -412,6 +480,28 @@ void BreakageModule::replace(Simulation& sim, std::size_t parent, std::vector<Sp
     else
       ++rec.fragments;
   }
+  // Elastic energy of the starting overlaps (siblings, neighbours, walls, each <= eps min r).
+  const std::size_t first = p.size() - placed.size();
+  double created = 0;
+  std::vector<WallContact> found;
+  for (std::size_t a = first; a < p.size(); ++a) {
+    for (std::size_t b = a + 1; b < p.size(); ++b)
+      created += overlap_energy(sim, p.radius[a] + p.radius[b] - norm(p.x[a] - p.x[b]), p.radius[a],
+                                p.mass[a], material, p.radius[b], p.mass[b], material);
+    for (std::uint32_t j : around)
+      if (!(p.flags[j] & pflag::remove))
+        created +=
+            overlap_energy(sim, p.radius[a] + p.radius[j] - norm(p.x[a] - p.x[j]), p.radius[a],
+                           p.mass[a], material, p.radius[j], p.mass[j], p.material[j]);
+    for (const auto& w : sim.walls) {
+      found.clear();
+      w->contacts(p.x[a], p.radius[a], 0.0, found);
+      for (const auto& c : found)
+        created +=
+            overlap_energy(sim, c.overlap, p.radius[a], p.mass[a], material, 0, 0, w->material);
+    }
+  }
+  add_energy(sim, created);
   if (progeny.fines_mass > 0) {
     fines_mass_[material] += progeny.fines_mass;
     fines_momentum_ += progeny.fines_mass * vp;
@@ -431,6 +521,7 @@ void BreakageModule::ledger_row(const Simulation& sim) {
   r.time = sim.time;
   r.removed_total = sim.ledger.removed;
   r.breakage_removed = removed_;
+  r.created = created_;
   r.particle_mass = sim.particles.total_mass();
   for (double m : fines_mass_) r.fines_mass += m;
   r.momentum = sim.particles.total_momentum();
@@ -444,6 +535,7 @@ void BreakageModule::ledger_row(const Simulation& sim) {
 
 void BreakageModule::write_outputs() const {
   if (opt_.output_dir.empty()) return;
+  write_model_curves();
   {
     AtomicFile f(opt_.output_dir / "breakage_events.csv");
     auto& o = f.stream();
@@ -465,18 +557,53 @@ void BreakageModule::write_outputs() const {
     AtomicFile f(opt_.output_dir / "breakage_ledger.csv");
     auto& o = f.stream();
     o << "time_s,events,breakages,pending_fragments,particles,particle_mass_kg,fines_mass_kg,"
-         "removed_energy_total_J,removed_energy_breakage_J,momentum_x_kg_m_per_s,"
+         "removed_energy_total_J,removed_energy_breakage_J,created_elastic_energy_J,momentum_x_kg_"
+         "m_per_s,"
          "momentum_y_kg_m_per_s,momentum_z_kg_m_per_s,fines_momentum_x_kg_m_per_s,"
          "fines_momentum_y_kg_m_per_s,fines_momentum_z_kg_m_per_s\n";
     for (const auto& r : ledger_)
       o << fmt::format(
           "{:.9g},{},{},{},{},{:.12g},{:.12g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},"
-          "{:.9g},{:.9g}\n",
+          "{:.9g},{:.9g},{:.9g}\n",
           r.time, r.events, r.breakages, r.pending, r.particles, r.particle_mass, r.fines_mass,
-          r.removed_total, r.breakage_removed, r.momentum.x, r.momentum.y, r.momentum.z,
+          r.removed_total, r.breakage_removed, r.created, r.momentum.x, r.momentum.y, r.momentum.z,
           r.fines_momentum.x, r.fines_momentum.y, r.fines_momentum.z);
     f.commit();
   }
+}
+
+void BreakageModule::write_model_curves() const {
+  // Model curves for the plots, per material at the mean diameter of its logged events of the
+  // first generation (all events when there are none):
+  // breakage probability of a fresh particle and t10 versus absorbed specific energy.
+  AtomicFile f(opt_.output_dir / "breakage_model.csv");
+  auto& o = f.stream();
+  o << "material,diameter_m,specific_energy_J_per_kg,probability,t10_percent\n";
+  for (std::size_t m = 0; m < materials_.size(); ++m) {
+    if (!materials_[m]) continue;
+    double d = 0, e_max = 0;
+    std::size_t n = 0;
+    bool first_generation = false;
+    for (const auto& r : log_) first_generation |= r.material == m && r.generation == 0;
+    for (const auto& r : log_)
+      if (r.material == m && (!first_generation || r.generation == 0)) {
+        d += r.diameter;
+        e_max = std::max(e_max, r.specific_energy);
+        ++n;
+      }
+    if (n == 0) continue;
+    d /= static_cast<double>(n);
+    const MaterialBreakage& mat = *materials_[m];
+    double e50b = mat.criterion->median_fracture_energy(d);
+    if (e50b <= 0) e50b = mat.reference_energy;
+    const bool energy_criterion = mat.criterion->strength_unit() == "J/kg";
+    for (int k = 0; k <= 200; ++k) {
+      const double e = 1.5 * e_max * k / 200.0;
+      const double prob = energy_criterion ? mat.criterion->probability(d, {e, 0.0}) : -1.0;
+      o << fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g}\n", m, d, e, prob, mat.progeny.t10(e, e50b));
+    }
+  }
+  f.commit();
 }
 
 void BreakageModule::save(Archive& a) const {
@@ -488,6 +615,7 @@ void BreakageModule::save(Archive& a) const {
   a.put_value("breakage/fines_momentum", fines_momentum_);
   a.put("breakage/counters", std::vector<std::uint64_t>{breakages_, events_});
   a.put_value("breakage/removed", removed_);
+  a.put_value("breakage/created", created_);
   a.put_value("breakage/next_output", next_output_);
   a.put("breakage/ledger", ledger_);
 }
@@ -507,6 +635,7 @@ void BreakageModule::load(const Archive& a) {
   breakages_ = c.at(0);
   events_ = c.at(1);
   removed_ = a.get_value<double>("breakage/removed");
+  created_ = a.get_value<double>("breakage/created");
   next_output_ = a.get_value<double>("breakage/next_output");
   ledger_ = a.get<LedgerRow>("breakage/ledger");
   setup_done_ = true;  // setup() that follows keeps the restored random states

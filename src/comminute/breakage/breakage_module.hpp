@@ -77,6 +77,11 @@ class BreakageModule final : public Module {
   ~BreakageModule() override;
 
   std::string name() const override { return "breakage"; }
+  // Registers the module's and the criteria's per-particle fields. Called by setup(); call it
+  // once right after construction as well, so that a checkpoint restores the fields.
+  void register_fields(ParticleStore& p);
+  void set_output_directory(const std::filesystem::path& dir) { opt_.output_dir = dir; }
+  const std::filesystem::path& output_directory() const { return opt_.output_dir; }
   void setup(Simulation& sim) override;
   void pre_force(Simulation& sim) override;
   void post_force(Simulation& sim) override;
@@ -94,6 +99,9 @@ class BreakageModule final : public Module {
   Vec3 fines_momentum() const { return fines_momentum_; }
   // Energy taken out by breakage so far (J), also added to sim.ledger.removed.
   double removed_energy() const { return removed_; }
+  // Elastic energy created by the starting overlaps and the growth of fragments (J); it is
+  // counted in removed_energy() with a negative sign.
+  double created_energy() const { return created_; }
   const MaterialBreakage* material(std::size_t k) const {
     return k < materials_.size() && materials_[k] ? &*materials_[k] : nullptr;
   }
@@ -103,10 +111,12 @@ class BreakageModule final : public Module {
  private:
   void initialize_particle(Simulation& sim, std::size_t i);
   void update_events(Simulation& sim);
-  void replace(Simulation& sim, std::size_t parent, std::vector<Sphere>& neighbours,
+  void replace(Simulation& sim, std::size_t parent, const std::vector<std::uint32_t>& around,
                const EventRecord& rec);
+  void add_energy(Simulation& sim, double joules);  // elastic energy created by placement/growth
   void grow(Simulation& sim);
   void ledger_row(const Simulation& sim);
+  void write_model_curves() const;
 
   std::vector<std::optional<MaterialBreakage>> materials_;
   BreakageOptions opt_;
@@ -125,10 +135,13 @@ class BreakageModule final : public Module {
   std::vector<double> fines_mass_;
   Vec3 fines_momentum_;
   double removed_ = 0;
+  double created_ = 0;
   double growth_since_rebuild_ = 0;
   std::uint64_t rebuilds_seen_ = 0;
+  bool list_stale_ = false;  // particles were compacted since the last pair-list build
+  std::uint64_t rebuilds_at_replacement_ = 0;
   struct LedgerRow {
-    double time, removed_total, breakage_removed, particle_mass, fines_mass;
+    double time, removed_total, breakage_removed, created, particle_mass, fines_mass;
     Vec3 momentum, fines_momentum;
     std::uint64_t events, breakages, pending, particles;
   };

@@ -93,7 +93,9 @@ def probability_point(events):
 
 def probability_plot(runs, out):
     points = [pt for pt in (probability_point(ev) for ev, _ in runs) if pt]
-    model = runs[0][1]
+    # the model curve of the run that reaches the highest energy (same material and size)
+    model = max((m for _, m in runs), key=lambda m: max(
+        (float(r["specific_energy_J_per_kg"]) for r in m), default=0.0))
     curve = [r for r in model if float(r["probability"]) >= 0]
     if not points or not curve:
         return

@@ -339,7 +339,9 @@ double stored_energy(const Simulation& sim, std::size_t i, double other_radius, 
 }  // namespace
 
 void BreakageModule::end_of_step(Simulation& sim) {
-  if (!broken_ids_.empty()) {
+  const bool due = opt_.replacement_interval <= 1 ||
+                   sim.step_count % static_cast<std::uint64_t>(opt_.replacement_interval) == 0;
+  if (!broken_ids_.empty() && due) {
     auto& p = sim.particles;
     // Slots of the parents and the spheres around them (other parents included).
     std::unordered_map<std::uint64_t, std::size_t> slot_of;

@@ -44,9 +44,11 @@ struct MaterialBreakage {
 
 struct BreakageOptions {
   PlacementOptions placement;
-  double growth_step = 0.005;   // largest radius increment per step, fraction of the final radius
-  int event_end_steps = 20;     // steps without new loading that end a stressing event
-  bool log_all_events = false;  // also log events that did not break (probability plots)
+  double growth_step = 0.005;    // largest radius increment per step, fraction of the final radius
+  int event_end_steps = 20;      // steps without new loading that end a stressing event
+  int replacement_interval = 1;  // replace broken parents every this many steps (batched; each
+                                 // replacement makes the engine rebuild its neighbour list)
+  bool log_all_events = false;   // also log events that did not break (probability plots)
   std::filesystem::path output_dir;  // event log and ledger; empty = no files
   double output_interval = 0;        // s between ledger rows / file rewrites (0: every 1000 steps)
 };

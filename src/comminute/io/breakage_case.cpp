@@ -106,6 +106,7 @@ breakage::BreakageModule* add_breakage(const CaseTable& root, Simulation& sim,
     opt.growth_step = g->number("growth_step", Limits{0.0, 1.0, true, false}, 0.005);
     opt.event_end_steps = static_cast<int>(g->integer("event_end_steps", 1, 1000000, 20));
     opt.log_all_events = g->boolean("log_all_events", false);
+    opt.replacement_interval = static_cast<int>(g->integer("replacement_interval", 1, 1000, 1));
     opt.output_interval = g->number("output_interval", Limits::non_negative(), 0.0);
     psd_interval = g->number("size_distribution_interval", Limits::non_negative(), 0.0);
     if (g->has("sieves")) sieves.sieves = g->numbers("sieves", Limits::positive());

@@ -120,7 +120,7 @@ void BreakageModule::pre_force(Simulation& sim) {
 void BreakageModule::grow(Simulation& sim) {
   auto& p = sim.particles;
   const std::size_t n = p.size();
-  const double eps = opt_.placement.overlap_ratio;
+  const double eps = opt_.growth_overlap_ratio;
   std::vector<double> limit(n, 0.0);
   const auto& target = p.field(f_target_);
   for (std::size_t i = 0; i < n; ++i)
@@ -171,7 +171,7 @@ void BreakageModule::grow(Simulation& sim) {
   double created = 0;
   for (std::size_t k = 0; k < nl.size(); ++k) {
     const std::uint32_t i = nl.first[k], j = nl.second[k];
-    if (!was_growing[i] && !was_growing[j]) continue;
+    if (p.radius[i] == r_before[i] && p.radius[j] == r_before[j]) continue;  // nothing grew
     const double dist = norm(p.x[i] - p.x[j]);
     const double before = r_before[i] + r_before[j] - dist,
                  after = p.radius[i] + p.radius[j] - dist;

@@ -44,6 +44,8 @@ struct MaterialBreakage {
 
 struct BreakageOptions {
   PlacementOptions placement;
+  double growth_overlap_ratio = 0.001;  // largest overlap growth may create, fraction of the
+                                        // smaller radius (each growth step pumps in U(eps))
   double growth_step = 0.005;    // largest radius increment per step, fraction of the final radius
   int event_end_steps = 20;      // steps without new loading that end a stressing event
   int replacement_interval = 1;  // replace broken parents every this many steps (batched; each

@@ -104,6 +104,8 @@ breakage::BreakageModule* add_breakage(const CaseTable& root, Simulation& sim,
     opt.placement.overlap_ratio = g->number("overlap_ratio", Limits{0.0, 0.5, true, false}, 0.01);
     opt.placement.attempts = static_cast<int>(g->integer("placement_attempts", 1, 10000, 30));
     opt.growth_step = g->number("growth_step", Limits{0.0, 1.0, true, false}, 0.005);
+    opt.growth_overlap_ratio =
+        g->number("growth_overlap_ratio", Limits{0.0, 0.5, false, false}, 0.001);
     opt.event_end_steps = static_cast<int>(g->integer("event_end_steps", 1, 1000000, 20));
     opt.log_all_events = g->boolean("log_all_events", false);
     opt.replacement_interval = static_cast<int>(g->integer("replacement_interval", 1, 1000, 1));

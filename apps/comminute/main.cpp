@@ -20,7 +20,9 @@ bool add_command(Command c) {
   registry().push_back(std::move(c));
   return true;
 }
-const std::vector<Command>& commands() { return registry(); }
+const std::vector<Command>& commands() {
+  return registry();
+}
 
 }  // namespace comminute::app
 

@@ -32,6 +32,7 @@ struct ContactKinematics {
   Vec3 relative_angular_velocity;  // rad/s, w_i - w_j (rolling)
   double effective_radius = 0;  // m, R* (wall: R_i)
   double effective_mass = 0;    // kg, m* (wall: m_i)
+  double effective_inertia = 0; // kg m2, I_i I_j / (I_i + I_j) (wall: I_i), for rolling models
   double dt = 0;                // s
 };
 

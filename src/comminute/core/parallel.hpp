@@ -7,8 +7,12 @@
 #endif
 
 namespace comminute {
-inline int max_threads() { return omp_get_max_threads(); }
-inline int thread_id() { return omp_get_thread_num(); }
+inline int max_threads() {
+  return omp_get_max_threads();
+}
+inline int thread_id() {
+  return omp_get_thread_num();
+}
 
 // Flushes denormal numbers to zero on every OpenMP thread: velocities of a bed at rest decay
 // through the denormal range, where x86 arithmetic is ~100x slower. Results differ from IEEE only

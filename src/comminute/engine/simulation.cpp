@@ -265,6 +265,7 @@ void Simulation::particle_particle_forces() {
       ck.relative_angular_velocity = p.w[i] - p.w[j];
       ck.effective_radius = p.radius[i] * p.radius[j] / rsum;
       ck.effective_mass = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
+      ck.effective_inertia = p.inertia[i] * p.inertia[j] / (p.inertia[i] + p.inertia[j]);
       const PairParameters& pp = materials.pair(p.material[i], p.material[j]);
       ContactHistory& h = nlist_.history[k];
       ContactForces out;
@@ -331,6 +332,7 @@ void Simulation::particle_wall_forces() {
     ck.relative_angular_velocity = p.w[i];
     ck.effective_radius = p.radius[i];
     ck.effective_mass = p.mass[i];
+    ck.effective_inertia = p.inertia[i];
     const PairParameters& pp = materials.pair(p.material[i], w.material);
     ContactForces out;
     contact_law.compute(ck, pp, c.history, out);

@@ -14,19 +14,27 @@ struct CaseFileState {
   std::filesystem::path path;
   toml::table doc;
   std::set<std::string> used;
+  std::set<std::string> asked;  // every key a reader looked for, present or not (suggestions)
 };
 
 namespace {
 
 std::string type_name(const toml::node& n) {
   switch (n.type()) {
-    case toml::node_type::table: return "table";
-    case toml::node_type::array: return "array";
-    case toml::node_type::string: return "string";
-    case toml::node_type::integer: return "integer";
-    case toml::node_type::floating_point: return "float";
-    case toml::node_type::boolean: return "boolean";
-    default: return "date/time";
+    case toml::node_type::table:
+      return "table";
+    case toml::node_type::array:
+      return "array";
+    case toml::node_type::string:
+      return "string";
+    case toml::node_type::integer:
+      return "integer";
+    case toml::node_type::floating_point:
+      return "float";
+    case toml::node_type::boolean:
+      return "boolean";
+    default:
+      return "date/time";
   }
 }
 
@@ -63,9 +71,13 @@ CaseTable::CaseTable(const toml::table* table, std::string path,
                      std::shared_ptr<CaseFileState> file)
     : table_(table), path_(std::move(path)), file_(std::move(file)) {}
 
-std::string CaseTable::key_path(std::string_view key) const { return join_path(path_, key); }
+std::string CaseTable::key_path(std::string_view key) const {
+  return join_path(path_, key);
+}
 
-bool CaseTable::has(std::string_view key) const { return table_->contains(key); }
+bool CaseTable::has(std::string_view key) const {
+  return table_->contains(key);
+}
 
 std::vector<std::string> CaseTable::keys() const {
   std::vector<std::string> out;
@@ -73,7 +85,9 @@ std::vector<std::string> CaseTable::keys() const {
   return out;
 }
 
-const std::filesystem::path& CaseTable::file() const { return file_->path; }
+const std::filesystem::path& CaseTable::file() const {
+  return file_->path;
+}
 
 long CaseTable::line(std::string_view key) const {
   const toml::node* n = key.empty() ? static_cast<const toml::node*>(table_) : table_->get(key);
@@ -85,9 +99,12 @@ void CaseTable::fail(std::string_view key, const std::string& message) const {
   throw InputError(file_->path.string(), key.empty() ? path_ : key_path(key), line(key), message);
 }
 
-void CaseTable::mark_used(std::string_view key) const { file_->used.insert(key_path(key)); }
+void CaseTable::mark_used(std::string_view key) const {
+  file_->used.insert(key_path(key));
+}
 
 const toml::node* CaseTable::get(std::string_view key) const {
+  file_->asked.insert(key_path(key));
   const toml::node* n = table_->get(key);
   if (n != nullptr) file_->used.insert(key_path(key));
   return n;
@@ -96,16 +113,16 @@ const toml::node* CaseTable::get(std::string_view key) const {
 const toml::node& CaseTable::require(std::string_view key) const {
   const toml::node* n = get(key);
   if (n == nullptr) {
-    std::string hint = nearest_name(key, keys());
-    fail({}, fmt::format("missing required key '{}'{}", key,
-                         hint.empty() ? "" : fmt::format(" (found '{}' — a typo?)", hint)));
+    const std::string hint = nearest_name(key, keys());
+    if (!hint.empty())
+      fail(hint, fmt::format("unknown key (did you mean '{}'? it is required)", key));
+    fail({}, fmt::format("missing required key '{}'", key));
   }
   return *n;
 }
 
 namespace {
-double as_number(const CaseTable& t, std::string_view key, const toml::node& n,
-                 const Limits& lim) {
+double as_number(const CaseTable& t, std::string_view key, const toml::node& n, const Limits& lim) {
   double v = 0;
   if (auto f = n.as_floating_point()) {
     v = f->get();
@@ -115,8 +132,8 @@ double as_number(const CaseTable& t, std::string_view key, const toml::node& n,
     t.fail(key, fmt::format("expected a number, got {} {}", type_name(n), show(n)));
   }
   if (!std::isfinite(v)) t.fail(key, fmt::format("value {} is not a finite number", v));
-  if (!lim.contains(v)) t.fail(key, fmt::format("value {} out of range: must be {}", v,
-                                                lim.describe()));
+  if (!lim.contains(v))
+    t.fail(key, fmt::format("value {} out of range: must be {}", v, lim.describe()));
   return v;
 }
 }  // namespace
@@ -166,8 +183,7 @@ std::string CaseTable::choice(std::string_view key, const std::vector<std::strin
   std::string v = string(key);
   if (std::find(choices.begin(), choices.end(), v) == choices.end()) {
     std::string hint = nearest_name(v, choices);
-    fail(key, fmt::format("unknown value \"{}\": expected one of {}{}", v,
-                          fmt::join(choices, ", "),
+    fail(key, fmt::format("unknown value \"{}\": expected one of {}{}", v, fmt::join(choices, ", "),
                           hint.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", hint)));
   }
   return v;
@@ -180,7 +196,8 @@ std::string CaseTable::choice(std::string_view key, const std::vector<std::strin
 std::vector<double> CaseTable::numbers(std::string_view key, const Limits& lim) const {
   const toml::node& n = require(key);
   auto arr = n.as_array();
-  if (!arr) fail(key, fmt::format("expected an array of numbers, got {} {}", type_name(n), show(n)));
+  if (!arr)
+    fail(key, fmt::format("expected an array of numbers, got {} {}", type_name(n), show(n)));
   std::vector<double> out;
   for (std::size_t i = 0; i < arr->size(); ++i) {
     const toml::node& e = *arr->get(i);
@@ -244,8 +261,8 @@ std::vector<CaseTable> CaseTable::tables(std::string_view key) const {
       out.emplace_back(t, key_path(key), file_);
       return out;
     }
-    fail(key, fmt::format("expected an array of tables [[{}]], got {}", key_path(key),
-                          type_name(*n)));
+    fail(key,
+         fmt::format("expected an array of tables [[{}]], got {}", key_path(key), type_name(*n)));
   }
   for (std::size_t i = 0; i < arr->size(); ++i) {
     auto t = arr->get(i)->as_table();
@@ -256,8 +273,7 @@ std::vector<CaseTable> CaseTable::tables(std::string_view key) const {
 }
 
 CaseFile CaseFile::load(const std::filesystem::path& path) {
-  if (!std::filesystem::exists(path))
-    throw InputError(path.string(), "", 0, "file not found");
+  if (!std::filesystem::exists(path)) throw InputError(path.string(), "", 0, "file not found");
   auto st = std::make_shared<CaseFileState>();
   st->path = path;
   try {
@@ -285,9 +301,15 @@ CaseFile CaseFile::parse(std::string_view text, const std::string& name) {
   return f;
 }
 
-CaseTable CaseFile::root() const { return CaseTable(&state_->doc, "", state_); }
-const std::filesystem::path& CaseFile::path() const { return state_->path; }
-std::set<std::string> CaseFile::used_keys() const { return state_->used; }
+CaseTable CaseFile::root() const {
+  return CaseTable(&state_->doc, "", state_);
+}
+const std::filesystem::path& CaseFile::path() const {
+  return state_->path;
+}
+std::set<std::string> CaseFile::used_keys() const {
+  return state_->used;
+}
 
 namespace {
 struct Unknown {
@@ -296,37 +318,44 @@ struct Unknown {
   std::vector<std::string> siblings;
 };
 
-void collect_unknown(const toml::table& t, const std::string& base, const std::set<std::string>& used,
+void collect_unknown(const toml::table& t, const std::string& base, const CaseFileState& st,
                      std::vector<Unknown>& out) {
+  // the keys readers asked for in this table, for "did you mean" suggestions
   std::vector<std::string> known;
-  for (const auto& [k, v] : t)
-    if (used.count(join_path(base, k.str()))) known.emplace_back(k.str());
+  const std::string prefix = base.empty() ? "" : base + ".";
+  for (auto it = st.asked.lower_bound(prefix); it != st.asked.end(); ++it) {
+    if (it->compare(0, prefix.size(), prefix) != 0) break;
+    const std::string leaf = it->substr(prefix.size());
+    if (leaf.find_first_of(".[") == std::string::npos) known.push_back(leaf);
+  }
   for (const auto& [k, v] : t) {
     std::string p = join_path(base, k.str());
-    if (!used.count(p)) {
+    if (!st.used.count(p)) {
       out.push_back({static_cast<long>(v.source().begin.line), p, known});
       continue;
     }
-    if (auto sub = v.as_table()) collect_unknown(*sub, p, used, out);
+    if (auto sub = v.as_table()) collect_unknown(*sub, p, st, out);
     if (auto arr = v.as_array())
       for (std::size_t i = 0; i < arr->size(); ++i)
         if (auto e = arr->get(i)->as_table())
-          collect_unknown(*e, fmt::format("{}[{}]", p, i), used, out);
+          collect_unknown(*e, fmt::format("{}[{}]", p, i), st, out);
   }
 }
 }  // namespace
 
 void CaseFile::reject_unknown() const {
   std::vector<Unknown> unknown;
-  collect_unknown(state_->doc, "", state_->used, unknown);
+  collect_unknown(state_->doc, "", *state_, unknown);
   if (unknown.empty()) return;
   auto first = std::min_element(unknown.begin(), unknown.end(),
                                 [](const Unknown& a, const Unknown& b) { return a.line < b.line; });
   std::string leaf = first->path.substr(first->path.find_last_of('.') + 1);
   std::string hint = nearest_name(leaf, first->siblings);
-  throw InputError(state_->path.string(), first->path, first->line,
-                   fmt::format("unknown key{}{}", hint.empty() ? "" : fmt::format(" (did you mean '{}'?)", hint),
-                               unknown.size() > 1 ? fmt::format("; {} unknown keys in all", unknown.size()) : ""));
+  throw InputError(
+      state_->path.string(), first->path, first->line,
+      fmt::format(
+          "unknown key{}{}", hint.empty() ? "" : fmt::format(" (did you mean '{}'?)", hint),
+          unknown.size() > 1 ? fmt::format("; {} unknown keys in all", unknown.size()) : ""));
 }
 
 std::string nearest_name(std::string_view name, const std::vector<std::string>& candidates) {

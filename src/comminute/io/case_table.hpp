@@ -37,7 +37,7 @@ struct Limits {
   static Limits any() { return {}; }
   static Limits positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
   static Limits non_negative() { return {0.0, std::numeric_limits<double>::infinity()}; }
-  static Limits unit_interval() { return {0.0, 1.0}; }               // [0, 1]
+  static Limits unit_interval() { return {0.0, 1.0}; }                   // [0, 1]
   static Limits open_unit_interval() { return {0.0, 1.0, true, true}; }  // (0, 1)
   static Limits at_least(double v) { return {v, std::numeric_limits<double>::infinity()}; }
   static Limits between(double a, double b) { return {a, b}; }

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# DEM throughput of comminute against the peer codes on the same cases, in one run, on this machine:
+#   settle N=20000, settle N=100000 (the peers' case A, shared/bench/peers) and dense N=100000 (a
+#   settled packing, bench/make_dense_state.sh; the peers run it with their own settle decks, which
+#   read any data file with the same walls).
+# Each run: 1000 warm-up steps, then 2000 timed steps (each code's own timer for those steps).
+# Writes bench/logs/*.log and the table bench/logs/dem_results.md (copied into bench/RESULTS.md by
+# hand, with the date and the machine's load).
+#   REPS=3 bench/run_benchmarks.sh      repetitions per configuration (median reported), default 1
+#   CASES="settle20k" bench/run_benchmarks.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+peers=${PEERS_DIR:-$(cd "$root/../shared/bench/peers" && pwd)}
+reps=${REPS:-1}
+cases=${CASES:-"settle20k settle100k dense100k"}
+COMMINUTE_PEERS=1 scripts/install-deps
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j "$(nproc)" --target bench_dem_throughput bench_make_dense_state >/dev/null
+[ -f bench/data/dense_N100000.data ] || bench/make_dense_state.sh
+mkdir -p bench/logs
+data_of() {
+  case $1 in
+    settle20k) echo "$peers/data/settle_N20000.data" ;;
+    settle100k) echo "$peers/data/settle_N100000.data" ;;
+    dense100k) echo "$root/bench/data/dense_N100000.data" ;;
+  esac
+}
+toml_of() {
+  case $1 in
+    settle20k) echo bench/cases/settle_20000.toml ;;
+    settle100k) echo bench/cases/settle_100000.toml ;;
+    dense100k) echo bench/cases/dense_100000.toml ;;
+  esac
+}
+for rep in $(seq 1 "$reps"); do
+  for c in $cases; do
+    for np in 1 2; do
+      log=bench/logs/comminute_${c}_p${np}_r${rep}.log
+      OMP_NUM_THREADS=$np build/bench/bench_dem_throughput "$(toml_of "$c")" 1000 2000 > "$log" 2>&1
+      echo "comminute $c $np: $(tail -1 "$log")"
+      for code in liggghts lammps; do
+        log=$root/bench/logs/${code}_${c}_p${np}_r${rep}.log
+        exe=liggghts; [ $code = lammps ] && exe="lmp -nocite"
+        mpi=""; [ "$np" -gt 1 ] && mpi="mpirun --allow-run-as-root -np $np"
+        (cd "$peers/$code" && OMP_NUM_THREADS=1 /usr/bin/time -v -o "$log.time" $mpi $exe -in in.settle \
+          -var data "$(data_of "$c")" -var warm 1000 -var steps 2000 -log none) > "$log" 2>&1 || echo "FAILED: $log"
+        echo "$code $c $np: $(grep 'Loop time' "$log" | tail -1)"
+      done
+    done
+  done
+done
+/usr/bin/python3 bench/summarize_dem.py bench/logs | tee bench/logs/dem_results.md

@@ -1,0 +1,38 @@
+#include "comminute/pbm/stress_rate.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "comminute/core/error.hpp"
+
+namespace comminute::pbm {
+
+ContactFrequencySpectrum::ContactFrequencySpectrum(std::vector<double> stress,
+                                                   std::vector<double> frequency)
+    : s_(std::move(stress)), n_(std::move(frequency)), tail_(s_.size(), 0.0) {
+  if (s_.size() < 2 || s_.size() != n_.size())
+    throw Error("contact frequency spectrum: need at least two (stress, frequency) rows");
+  for (std::size_t i = 1; i < s_.size(); ++i)
+    if (!(s_[i] > s_[i - 1])) throw Error("contact frequency spectrum: stresses must increase");
+  for (std::size_t i = s_.size() - 1; i > 0; --i)
+    tail_[i - 1] = tail_[i] + 0.5 * (n_[i] + n_[i - 1]) * (s_[i] - s_[i - 1]);
+}
+
+double ContactFrequencySpectrum::integral_above(double sigma) const {
+  if (sigma <= s_.front()) return tail_.front();
+  if (sigma >= s_.back()) return 0.0;
+  const std::size_t i = static_cast<std::size_t>(std::upper_bound(s_.begin(), s_.end(), sigma) -
+                                                 s_.begin());  // s_[i-1] <= σ < s_[i]
+  const double w = (sigma - s_[i - 1]) / (s_[i] - s_[i - 1]);
+  const double n_sigma = n_[i - 1] + w * (n_[i] - n_[i - 1]);
+  return tail_[i] + 0.5 * (n_sigma + n_[i]) * (s_[i] - sigma);
+}
+
+// seed 003: b(x) = λ ∫_{σcrit(x)}^{σmax} ṅ(σ) dσ.
+double StressRate::rate(double size, double /*volume*/) const {
+  const double sc = strength_->of_size(size);
+  if (!std::isfinite(sc)) return 0.0;
+  return lambda_ * spectrum_.integral_above(sc);
+}
+
+}  // namespace comminute::pbm

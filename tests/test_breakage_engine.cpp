@@ -86,6 +86,7 @@ struct CompressionRun {
   BreakageProbe probe;
   double max_speed = 0, speed_bound = 0, released_max = 0;
   std::uint64_t breakages = 0;
+  std::size_t pending = 0, particles = 0;
   std::vector<std::uint64_t> by_generation = std::vector<std::uint64_t>(16, 0);
 };
 
@@ -114,6 +115,10 @@ const CompressionRun& compression() {
     mats.emplace_back(weak_material(2.0, 0.5, 0.0005, 0.3, breakage::FinesRule::mass, eta));
     breakage::BreakageOptions opt;
     opt.placement.overlap_ratio = eps;
+    // Growth may create overlaps up to eps too (default 0.001): under the platen's load
+    // fragments otherwise stay undersized, and growing fragments are not assessed, so fewer of
+    // them would reach the third generation within this short run.
+    opt.growth_overlap_ratio = eps;
     auto mod = std::make_unique<breakage::BreakageModule>(std::move(mats), opt);
     out.probe.module = mod.get();
     auto speed = std::make_unique<SpeedProbe>();
@@ -128,6 +133,8 @@ const CompressionRun& compression() {
     const auto steps = static_cast<std::uint64_t>(0.62 * L / v_platen / sim->dt);
     for (std::uint64_t k = 0; k < steps; ++k) sim->step();
     out.max_speed = sp->max_speed;
+    out.pending = out.probe.module->pending();
+    out.particles = sim->particles.size();
     out.breakages = out.probe.module->breakages();
     double e_max = 0;
     for (const auto& r : out.probe.module->log()) {
@@ -153,9 +160,10 @@ const CompressionRun& compression() {
 // replacement against the fastest parent of the step), (b) the kinetic energy after each
 // replacement exceeds that before by at most the configured released energy (exactly eta E m_p
 // without spin; 1e-9 relative covers rounding), and (c) no particle ever holds more kinetic
-// energy than the platen work plus the releases. Note: undersized fragments squeezed by the
-// closing bed do reach several m/s in this soft (E = 10 MPa), fast (2 m/s) compression; that is
-// stress release, bounded by (c), not placement.
+// energy than the platen work plus the releases. Note: most fragments in this bed stay
+// undersized (pending growth, the closing bed leaves them no room) and, being light, are squeezed
+// to speeds far above the platen's (max_speed_m_per_s, ~30 m/s with E = 10 MPa at 2 m/s); that is
+// stress release after replacement, bounded only by (c), not by placement.
 TEST(BreakageEngine, NoExplosionsInCompressedBed) {
   const CompressionRun& c = compression();
   ASSERT_GT(c.breakages, 100u);
@@ -164,6 +172,8 @@ TEST(BreakageEngine, NoExplosionsInCompressedBed) {
   EXPECT_LE(c.max_speed, c.speed_bound);
   EXPECT_LE(c.probe.worst_mass_error, 1e-12);
   RecordProperty("max_speed_m_per_s", std::to_string(c.max_speed));
+  RecordProperty("pending_at_end",
+                 std::to_string(c.pending) + " of " + std::to_string(c.particles));
   RecordProperty("energy_speed_bound_m_per_s", std::to_string(c.speed_bound));
 }
 

@@ -109,14 +109,6 @@ void BreakageModule::add_energy(Simulation& sim, double joules) {
   sim.ledger.removed -= joules;
 }
 
-void BreakageModule::pre_force(Simulation& sim) {
-  // After a replacement the pair list refers to the old slots until the engine rebuilds it (in
-  // this step's force computation): growth waits one step then.
-  if (list_stale_ && sim.neighbor_rebuilds() == rebuilds_at_replacement_) return;
-  list_stale_ = false;
-  if (pending_ > 0) grow(sim);
-}
-
 void BreakageModule::grow(Simulation& sim) {
   auto& p = sim.particles;
   const std::size_t n = p.size();
@@ -162,7 +154,6 @@ void BreakageModule::grow(Simulation& sim) {
       p.radius[i] = target[i];
       p.flags[i] &= ~pflag::growing;
       p.field(f_target_)[i] = 0;
-      p.field(f_baseline_)[i] = 0;  // growth loading is not a stressing event
       --pending_;
     }
   }
@@ -237,13 +228,17 @@ void BreakageModule::update_events(Simulation& sim) {
   auto& force = p.field(f_force_);
   auto& baseline = p.field(f_baseline_);
   auto& quiet = p.field(f_quiet_);
-  for (std::size_t i = 0; i < n; ++i) {
+  const auto& target = p.field(f_target_);
+  for (std::size_t i = 0; i < n; ++i)  // particles inserted by other modules draw strength now
     if (p.field(f_init_)[i] == 0) initialize_particle(sim, i);
+  for (std::size_t i = 0; i < n; ++i) {
     const auto& mat = materials_[p.material[i]];
     if (!mat || (p.flags[i] & (pflag::fixed | pflag::unbreakable | pflag::remove))) continue;
-    const double d = 2 * p.radius[i];
+    // A growing fragment already carries its full mass and transmits real contact forces: it is
+    // assessed at its final size (the overlaps growth creates are capped, see grow()).
+    const double d = 2 * std::max(p.radius[i], target[i]);
     const double s = load_[i] / p.mass[i];  // J/kg
-    if (p.flags[i] & pflag::growing || d < mat->min_breakable_size) {
+    if (d < mat->min_breakable_size) {
       baseline[i] = s;
       continue;
     }
@@ -387,8 +382,6 @@ void BreakageModule::end_of_step(Simulation& sim) {
     }
     p.compact();
     sim.particles_changed();
-    list_stale_ = true;
-    rebuilds_at_replacement_ = sim.neighbor_rebuilds();
     broken_ids_.clear();
     broken_records_.clear();
   }
@@ -407,9 +400,12 @@ void BreakageModule::replace(Simulation& sim, std::size_t parent,
   for (std::uint32_t j : around) neighbours.push_back({p.x[j], p.radius[j]});
   const MaterialBreakage& mat = *materials_[p.material[parent]];
   EventRecord rec = rec_in;
-  const double d = 2 * p.radius[parent];
+  // A fragment that breaks while still growing counts at its final size.
+  const double r_parent = std::max(p.radius[parent], p.field(f_target_)[parent]);
+  if (p.flags[parent] & pflag::growing) --pending_;
+  const double d = 2 * r_parent;
   const double mass = p.mass[parent];
-  const double density = mass / units::sphere_volume(p.radius[parent]);
+  const double density = mass / units::sphere_volume(r_parent);
   // Progeny sizes (seed 002 eq. 16-18).
   double e50b = mat.criterion->median_fracture_energy(d);
   if (e50b <= 0) e50b = mat.reference_energy;
@@ -434,7 +430,7 @@ void BreakageModule::replace(Simulation& sim, std::size_t parent,
     }
     return worst;
   };
-  const Sphere ps{p.x[parent], p.radius[parent]};
+  const Sphere ps{p.x[parent], r_parent};
   const auto placed =
       place_fragments(ps, radii, masses, neighbours, walls, opt_.placement, placement_rng_);
   std::vector<Vec3> xs;

@@ -1,8 +1,8 @@
 #pragma once
 // Particle-replacement breakage as an engine module (issue 3). Per step:
-//   pre_force    grow pending fragments towards their full radius (overlaps capped),
-//   post_force   build each particle's stressing event from its contacts and ask its material's
-//                criterion whether it breaks (breakage is decided during loading),
+//   post_force   grow pending fragments towards their full radius (overlaps capped); build each
+//                particle's stressing event from its contacts and ask its material's criterion
+//                whether it breaks (breakage is decided during loading),
 //   end_of_step  replace the broken parents by fragments (after the step's last half kick, so
 //                the fragments inherit the parent's final velocity).
 //
@@ -87,7 +87,6 @@ class BreakageModule final : public Module {
   void set_output_directory(const std::filesystem::path& dir) { opt_.output_dir = dir; }
   const std::filesystem::path& output_directory() const { return opt_.output_dir; }
   void setup(Simulation& sim) override;
-  void pre_force(Simulation& sim) override;
   void post_force(Simulation& sim) override;
   void end_of_step(Simulation& sim) override;
   void save(Archive& a) const override;
@@ -142,8 +141,6 @@ class BreakageModule final : public Module {
   double created_ = 0;
   double growth_since_rebuild_ = 0;
   std::uint64_t rebuilds_seen_ = 0;
-  bool list_stale_ = false;  // particles were compacted since the last pair-list build
-  std::uint64_t rebuilds_at_replacement_ = 0;
   struct LedgerRow {
     double time, removed_total, breakage_removed, created, particle_mass, fines_mass;
     Vec3 momentum, fines_momentum;

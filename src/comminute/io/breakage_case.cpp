@@ -80,8 +80,9 @@ breakage::MaterialBreakage read_material(const CaseTable& b, const Material& mat
 
 }  // namespace
 
-breakage::BreakageModule* add_breakage(const CaseTable& root, Simulation& sim,
+breakage::BreakageModule* add_breakage(const CaseTable& root, DemCase& dem,
                                        const std::filesystem::path& output_dir) {
+  Simulation& sim = *dem.sim;
   std::vector<std::optional<breakage::MaterialBreakage>> mats(sim.materials.size());
   bool any = false;
   const CaseTable materials = root.table("materials");
@@ -133,8 +134,12 @@ breakage::BreakageModule* add_breakage(const CaseTable& root, Simulation& sim,
                         fmt::format("{:.4g} s is {:.0f} % of the Rayleigh time {:.4g} s of the "
                                     "smallest fragment ({:.4g} m) material '{}' can produce",
                                     sim.dt, 100 * sim.dt / t_rayleigh, t_rayleigh, d, m.name));
-    } else {
-      sim.dt = std::min(sim.dt, fraction * t_rayleigh);
+    } else if (fraction * t_rayleigh < sim.dt) {
+      sim.dt = fraction * t_rayleigh;
+      dem.time_step_note += fmt::format(
+          "; lowered to {:.4g} s = {:.0f} % of the Rayleigh time of the smallest fragment "
+          "({:.4g} m) material '{}' can produce",
+          sim.dt, 100 * fraction, d, m.name);
     }
   }
   auto module = std::make_unique<breakage::BreakageModule>(std::move(mats), opt);

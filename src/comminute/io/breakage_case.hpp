@@ -7,14 +7,16 @@
 #include "comminute/breakage/breakage_module.hpp"
 #include "comminute/engine/simulation.hpp"
 #include "comminute/io/case_table.hpp"
+#include "comminute/io/dem_case.hpp"
 
 namespace comminute::io {
 
 // When at least one material has a breakage table, appends a BreakageModule (and a size
 // distribution observer writing into `output_dir`) to sim.modules and returns the module;
-// otherwise returns nullptr. Call after the materials exist (build_dem_case) and before
-// CaseFile::reject_unknown().
-breakage::BreakageModule* add_breakage(const CaseTable& root, Simulation& sim,
+// otherwise returns nullptr. Call after build_dem_case and before CaseFile::reject_unknown().
+// Lowers the time step for the smallest fragment when the case did not set it (the change is
+// added to dem.time_step_note).
+breakage::BreakageModule* add_breakage(const CaseTable& root, DemCase& dem,
                                        const std::filesystem::path& output_dir);
 
 }  // namespace comminute::io

@@ -29,7 +29,7 @@ BreakageModule::BreakageModule(std::vector<std::optional<MaterialBreakage>> per_
 
 BreakageModule::~BreakageModule() {
   try {
-    if (setup_done_) write_outputs();
+    if (configured_) write_outputs();
   } catch (...) {  // a destructor must not throw; the outputs were written at intervals
   }
 }
@@ -48,6 +48,15 @@ void BreakageModule::register_fields(ParticleStore& p) {
 }
 
 void BreakageModule::setup(Simulation& sim) {
+  strength_rng_ = Rng(sim.seed, rng_stream::breakage);
+  placement_rng_ = Rng(sim.seed, rng_stream::placement);
+  configure(sim);
+  auto& p = sim.particles;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.field(f_init_)[i] == 0) initialize_particle(sim, i);
+}
+
+void BreakageModule::configure(Simulation& sim) {
   auto& p = sim.particles;
   register_fields(p);
   n_materials_ = sim.materials.size();
@@ -62,17 +71,14 @@ void BreakageModule::setup(Simulation& sim) {
                        plane_strain_modulus(mb.youngs_modulus, mb.poisson_ratio));
     }
   fines_mass_.resize(n_materials_, 0.0);
-  if (!setup_done_) {  // a fresh run (load() restores these otherwise)
-    strength_rng_ = Rng(sim.seed, rng_stream::breakage);
-    placement_rng_ = Rng(sim.seed, rng_stream::placement);
-  }
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.field(f_init_)[i] == 0) initialize_particle(sim, i);
   pending_ = 0;
   for (std::size_t i = 0; i < p.size(); ++i) pending_ += (p.flags[i] & pflag::growing) ? 1 : 0;
   rebuilds_seen_ = sim.neighbor_rebuilds();
+  // A checkpoint written right after a replacement holds the pair list of the old slots (the
+  // engine does not save its "rebuild needed" flag): rebuild when the list does not match.
+  if (sim.pairs().ids_at_build() != p.id) sim.particles_changed();
   if (!opt_.output_dir.empty()) std::filesystem::create_directories(opt_.output_dir);
-  setup_done_ = true;
+  configured_ = true;
 }
 
 void BreakageModule::initialize_particle(Simulation& sim, std::size_t i) {
@@ -189,6 +195,9 @@ void BreakageModule::grow(Simulation& sim) {
   // so ask for a rebuild once a fragment has grown by a tenth of the skin since the last one.
   if (sim.neighbor_rebuilds() != rebuilds_seen_) {
     rebuilds_seen_ = sim.neighbor_rebuilds();
+    // A checkpoint written right after a replacement holds the pair list of the old slots (the
+    // engine does not save its "rebuild needed" flag): rebuild when the list does not match.
+    if (sim.pairs().ids_at_build() != p.id) sim.particles_changed();
     growth_since_rebuild_ = 0;
   }
   growth_since_rebuild_ += grown;
@@ -196,6 +205,11 @@ void BreakageModule::grow(Simulation& sim) {
     sim.particles_changed();
     growth_since_rebuild_ = 0;
   }
+}
+
+void BreakageModule::pre_force(Simulation& sim) {
+  // After Simulation::load() modules are not set up again: configure from the restored state.
+  if (!configured_) configure(sim);
 }
 
 void BreakageModule::post_force(Simulation& sim) {
@@ -636,7 +650,7 @@ void BreakageModule::load(const Archive& a) {
   created_ = a.get_value<double>("breakage/created");
   next_output_ = a.get_value<double>("breakage/next_output");
   ledger_ = a.get<LedgerRow>("breakage/ledger");
-  setup_done_ = true;  // setup() that follows keeps the restored random states
+  configured_ = false;  // pre_force() rebuilds what depends on the simulation
 }
 
 }  // namespace comminute::breakage

@@ -87,6 +87,7 @@ class BreakageModule final : public Module {
   void set_output_directory(const std::filesystem::path& dir) { opt_.output_dir = dir; }
   const std::filesystem::path& output_directory() const { return opt_.output_dir; }
   void setup(Simulation& sim) override;
+  void pre_force(Simulation& sim) override;
   void post_force(Simulation& sim) override;
   void end_of_step(Simulation& sim) override;
   void save(Archive& a) const override;
@@ -112,6 +113,7 @@ class BreakageModule final : public Module {
   void write_outputs() const;
 
  private:
+  void configure(Simulation& sim);  // what depends on the simulation (after setup or load)
   void initialize_particle(Simulation& sim, std::size_t i);
   void update_events(Simulation& sim);
   void replace(Simulation& sim, std::size_t parent, const std::vector<std::uint32_t>& around,
@@ -148,7 +150,7 @@ class BreakageModule final : public Module {
   };
   std::vector<LedgerRow> ledger_;
   double next_output_ = 0;
-  bool setup_done_ = false;
+  bool configured_ = false;
 };
 
 }  // namespace comminute::breakage

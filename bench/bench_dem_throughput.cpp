@@ -6,8 +6,8 @@
 #include <sys/resource.h>
 
 #include <chrono>
-#include <fstream>
 #include <cstdlib>
+#include <fstream>
 
 #include "comminute/io/dem_case.hpp"
 
@@ -44,12 +44,13 @@ int main(int argc, char** argv) {
     getrusage(RUSAGE_SELF, &ru);
     const Observables o = sim.observe();
     const double n = static_cast<double>(sim.particles.size());
-    fmt::print("N={} threads={} steps={} seconds={:.3f} particle_steps_per_s={:.4g} contacts={} "
-               "pairs={} rebuilds={} rss_setup_MB={:.0f} rss_end_MB={:.0f} peak_rss_MB={:.0f} "
-               "bytes_per_particle={:.0f}\n",
-               sim.particles.size(), omp_get_max_threads(), steps, s,
-               n * static_cast<double>(steps) / s, o.contacts, sim.pairs().size(), sim.neighbor_rebuilds(),
-               rss_setup, rss_mb(), static_cast<double>(ru.ru_maxrss) / 1024.0, static_cast<double>(ru.ru_maxrss) * 1024.0 / n);
+    fmt::print(
+        "N={} threads={} steps={} seconds={:.3f} particle_steps_per_s={:.4g} contacts={} "
+        "pairs={} rebuilds={} rss_setup_MB={:.0f} rss_end_MB={:.0f} peak_rss_MB={:.0f} "
+        "bytes_per_particle={:.0f}\n",
+        sim.particles.size(), omp_get_max_threads(), steps, s, n * static_cast<double>(steps) / s,
+        o.contacts, sim.pairs().size(), sim.neighbor_rebuilds(), rss_setup, rss_mb(),
+        static_cast<double>(ru.ru_maxrss) / 1024.0, static_cast<double>(ru.ru_maxrss) * 1024.0 / n);
   } catch (const std::exception& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return 2;

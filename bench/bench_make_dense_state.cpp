@@ -31,8 +31,9 @@ int main(int argc, char** argv) {
       steps += 1000;
       const Observables o = sim.observe();
       ke = (o.kinetic_translational + o.kinetic_rotational) / static_cast<double>(o.particles);
-      fmt::print(stderr, "step {} t = {:.4f} s  kinetic energy per particle {:.3g} J  contacts {}\n",
-                 steps, sim.time, ke, o.contacts);
+      fmt::print(stderr,
+                 "step {} t = {:.4f} s  kinetic energy per particle {:.3g} J  contacts {}\n", steps,
+                 sim.time, ke, o.contacts);
     } while (ke > ke_limit && steps < max_steps);
     const auto& p = sim.particles;
     double zmax = 0;
@@ -43,7 +44,8 @@ int main(int argc, char** argv) {
     s << fmt::format("# dense bed: {} settled for {:.4f} s by comminute from {}\n\n", p.size(),
                      sim.time, argv[1]);
     s << p.size() << " atoms\n1 atom types\n\n";
-    s << "0.0 0.1 xlo xhi\n0.0 0.1 ylo yhi\n0.0 " << std::max(0.06, 1.2 * zmax) << " zlo zhi\n\nAtoms\n\n";
+    s << "0.0 0.1 xlo xhi\n0.0 0.1 ylo yhi\n0.0 " << std::max(0.06, 1.2 * zmax)
+      << " zlo zhi\n\nAtoms\n\n";
     for (std::size_t i = 0; i < p.size(); ++i) {
       const double d = 2 * p.radius[i];
       const double rho = p.mass[i] / (3.14159265358979323846 / 6 * d * d * d);
@@ -55,7 +57,8 @@ int main(int argc, char** argv) {
       s << i + 1 << ' ' << p.v[i].x << ' ' << p.v[i].y << ' ' << p.v[i].z << ' ' << p.w[i].x << ' '
         << p.w[i].y << ' ' << p.w[i].z << '\n';
     out.commit();
-    fmt::print(stderr, "wrote {} ({} particles, {} contacts)\n", argv[2], p.size(), sim.observe().contacts);
+    fmt::print(stderr, "wrote {} ({} particles, {} contacts)\n", argv[2], p.size(),
+               sim.observe().contacts);
   } catch (const std::exception& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return 2;

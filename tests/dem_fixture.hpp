@@ -11,10 +11,10 @@ struct DemSetup {
   double restitution = 0.5;
   double friction = 0.0;
   double rolling_friction = 0.0;
-  double cohesion = 0.0;           // J/m3
-  double linear_stiffness = 1e5;   // N/m (linear law)
+  double cohesion = 0.0;          // J/m3
+  double linear_stiffness = 1e5;  // N/m (linear law)
   double youngs = 1e7, poisson = 0.3, density = 2500;
-  std::string rolling;             // "" = none
+  std::string rolling;  // "" = none
   Vec3 gravity{0, 0, 0};
 };
 

@@ -10,13 +10,14 @@
 
 using namespace comminute;
 
-TEST(CaseDocs, EveryKeyOfTheSettleExampleIsDocumented) {
+TEST(CaseDocs, EveryKeyOfTheDemExamplesIsDocumented) {
   std::ifstream in(std::string(COMMINUTE_SOURCE_DIR) + "/docs/case-file.md");
   std::stringstream ss;
   ss << in.rdbuf();
   const std::string doc = ss.str();
   ASSERT_FALSE(doc.empty());
-  for (const char* name : {"/examples/settle/settle.toml", "/bench/cases/settle_20000.toml"}) {
+  for (const char* name : {"/examples/settle/settle.toml", "/examples/drum/rotating_drum.toml",
+                           "/examples/piston/confined_compression.toml"}) {
     io::CaseFile f = io::CaseFile::load(std::string(COMMINUTE_SOURCE_DIR) + name);
     io::build_dem_case(f.root());
     if (auto o = f.root().optional_table("output")) io::read_output_options(*o);
@@ -26,10 +27,12 @@ TEST(CaseDocs, EveryKeyOfTheSettleExampleIsDocumented) {
       leaf = leaf.substr(0, leaf.find('['));
       if (path.rfind("materials.", 0) == 0 && path.find('.', 10) == std::string::npos) continue;
       if (path.find('.') == std::string::npos) {  // a top-level table: documented as a heading
-        EXPECT_NE(doc.find("[" + leaf), std::string::npos) << path << " is not in docs/case-file.md";
+        EXPECT_NE(doc.find("[" + leaf), std::string::npos)
+            << path << " is not in docs/case-file.md";
         continue;
       }
-      EXPECT_NE(doc.find("`" + leaf + "`"), std::string::npos) << path << " is not in docs/case-file.md";
+      EXPECT_NE(doc.find("`" + leaf + "`"), std::string::npos)
+          << path << " is not in docs/case-file.md";
     }
   }
 }

@@ -28,7 +28,10 @@ void scatter(Simulation& sim, int n, double r, double L, double speed, std::uint
     Vec3 x{rng.uniform(r, L - r), rng.uniform(r, L - r), rng.uniform(r, L - r)};
     bool free = true;
     for (const auto& y : sim.particles.x) free = free && norm(x - y) > 2.05 * r;
-    if (free) add_sphere(sim, x, r, {rng.uniform(-speed, speed), rng.uniform(-speed, speed), rng.uniform(-speed, speed)});
+    if (free)
+      add_sphere(
+          sim, x, r,
+          {rng.uniform(-speed, speed), rng.uniform(-speed, speed), rng.uniform(-speed, speed)});
   }
 }
 
@@ -45,7 +48,8 @@ TEST(Conservation, EnergyWithoutDampingOrFriction) {
   s.gravity = {0, 0, -9.81};
   auto sim = make_simulation(s);
   const double L = 0.05, r = 0.003;
-  sim->walls.push_back(std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{L, L, L}, std::array<bool, 6>{}));
+  sim->walls.push_back(
+      std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{L, L, L}, std::array<bool, 6>{}));
   scatter(*sim, 30, r, L, 0.5, 11);
   sim->dt = 2e-6;
   sim->setup();
@@ -78,7 +82,8 @@ TEST(Conservation, LinearMomentumWithoutWallsOrGravity) {
   sim->setup();
   const Vec3 p0 = sim->particles.total_momentum();
   double scale = 0;
-  for (std::size_t i = 0; i < sim->particles.size(); ++i) scale += sim->particles.mass[i] * norm(sim->particles.v[i]);
+  for (std::size_t i = 0; i < sim->particles.size(); ++i)
+    scale += sim->particles.mass[i] * norm(sim->particles.v[i]);
   sim->run(20000);
   EXPECT_GT(sim->ledger.damping, 0.0);  // there were collisions
   EXPECT_LT(norm(sim->particles.total_momentum() - p0), 1e-12 * scale);
@@ -99,7 +104,9 @@ TEST(Conservation, SettledColumnWeighsOnTheFloor) {
   slick.friction = 0.0;
   sim->materials.set_pair(0, 1, slick);
   const double L = 0.02;
-  sim->walls.push_back(std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{L, L, 0.1}, std::array<bool, 6>{false, false, false, false, false, true}));
+  sim->walls.push_back(
+      std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{L, L, 0.1},
+                                std::array<bool, 6>{false, false, false, false, false, true}));
   sim->walls[0]->material = 1;
   scatter(*sim, 150, 0.0015, L, 0.0, 3);
   sim->dt = 5e-6;
@@ -169,7 +176,8 @@ TEST_P(EnergyBalance, BalancesWithDampingAndFriction) {
   s.gravity = {0, 0, -9.81};
   auto sim = make_simulation(s);
   const double L = 0.05, r = 0.003;
-  sim->walls.push_back(std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{L, L, L}, std::array<bool, 6>{}));
+  sim->walls.push_back(
+      std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{L, L, L}, std::array<bool, 6>{}));
   scatter(*sim, 30, r, L, 0.5, 11);
   sim->dt = 5e-7;
   sim->setup();

@@ -68,10 +68,10 @@ TEST_P(RestitutionTest, ReboundMatchesInputWithinOnePercent) {
   EXPECT_NEAR(im.restitution, e, 0.01 * e) << law << " e=" << e << (wall ? " wall" : " pair");
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Laws, RestitutionTest,
-    ::testing::Combine(::testing::Values("linear_spring_dashpot", "hertz_mindlin"),
-                       ::testing::Values(0.1, 0.5, 0.9), ::testing::Bool()));
+INSTANTIATE_TEST_SUITE_P(Laws, RestitutionTest,
+                         ::testing::Combine(::testing::Values("linear_spring_dashpot",
+                                                              "hertz_mindlin"),
+                                            ::testing::Values(0.1, 0.5, 0.9), ::testing::Bool()));
 
 TEST(HertzImpact, UndampedContactDurationMatchesHertzTheory) {
   for (bool wall : {false, true}) {
@@ -93,12 +93,14 @@ TEST(HertzImpact, UndampedContactDurationMatchesHertzTheory) {
 
 TEST(HertzImpact, ExactDampingIsIndependentOfImpactSpeed) {
   // Tsuji-type damping makes e independent of v: check over a decade of speeds.
-  for (double v : {0.05, 0.5, 5.0}) EXPECT_NEAR(run_impact("hertz_mindlin", 0.3, false, v).restitution, 0.3, 0.003);
+  for (double v : {0.05, 0.5, 5.0})
+    EXPECT_NEAR(run_impact("hertz_mindlin", 0.3, false, v).restitution, 0.3, 0.003);
 }
 
 TEST(Restitution, BetaFormulaIsExactForHertzWithTsujiDamping) {
   // Integrating the dimensionless Hertz + Tsuji-damping impact (independent of the DEM engine)
   // with the beta(e) formula reproduces e: the formula LIGGGHTS and EDEM use is consistent.
   // 1e-4: the RK4 step 2e-4 of a unit-scale problem gives errors far below that.
-  for (double e : {0.1, 0.3, 0.5, 0.7, 0.9}) EXPECT_NEAR(hertz_restitution(damping_beta(e)), e, 1e-4);
+  for (double e : {0.1, 0.3, 0.5, 0.7, 0.9})
+    EXPECT_NEAR(hertz_restitution(damping_beta(e)), e, 1e-4);
 }

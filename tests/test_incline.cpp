@@ -79,7 +79,8 @@ TEST(Incline, SphereRollsWithoutSlipAtFiveSevenths) {
   EXPECT_NEAR(a, expected, 0.01 * expected);
   // no slip: v = ω R at the end
   const double omega_y = in.sim->particles.w[0].y;
-  EXPECT_NEAR(omega_y * kR, dot(in.sim->particles.v[0], in.down), 0.01 * dot(in.sim->particles.v[0], in.down));
+  EXPECT_NEAR(omega_y * kR, dot(in.sim->particles.v[0], in.down),
+              0.01 * dot(in.sim->particles.v[0], in.down));
 }
 
 TEST(Incline, ConstantTorqueRollingResistanceStopsAtPredictedDistance) {

@@ -42,7 +42,8 @@ double min_gap(const ParticleStore& p) {
 TEST(Insertion, FillPlacesCountWithoutOverlapInsideRegionAndWalls) {
   auto sim = make_simulation({});
   // a wall plane through the region: particles must stay clear of it
-  sim->walls.push_back(std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{0.03, 0.03, 0.025}, std::array<bool, 6>{}));
+  sim->walls.push_back(
+      std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{0.03, 0.03, 0.025}, std::array<bool, 6>{}));
   SizeParameters sp;
   sp.min = 0.001;
   sp.max = 0.003;

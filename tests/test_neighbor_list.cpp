@@ -37,7 +37,8 @@ std::set<std::pair<std::uint64_t, std::uint64_t>> brute_force(const ParticleStor
   return out;
 }
 
-std::set<std::pair<std::uint64_t, std::uint64_t>> listed(const NeighborList& nl, const ParticleStore& p) {
+std::set<std::pair<std::uint64_t, std::uint64_t>> listed(const NeighborList& nl,
+                                                         const ParticleStore& p) {
   std::set<std::pair<std::uint64_t, std::uint64_t>> out;
   for (std::size_t k = 0; k < nl.size(); ++k) {
     auto pr = std::minmax(p.id[nl.first[k]], p.id[nl.second[k]]);

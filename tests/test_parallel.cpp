@@ -24,8 +24,9 @@ std::unique_ptr<Simulation> lattice_bed(int threads) {
   auto sim = make_simulation(s);
   const double r = 0.001, a = 2.05 * r;
   const int nx = 20;
-  sim->walls.push_back(std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{nx * a, nx * a, 1.0},
-                                                 std::array<bool, 6>{false, false, false, false, false, true}));
+  sim->walls.push_back(
+      std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{nx * a, nx * a, 1.0},
+                                std::array<bool, 6>{false, false, false, false, false, true}));
   Rng rng(9);
   for (int k = 0; k < 13; ++k)
     for (int j = 0; j < nx; ++j)
@@ -64,6 +65,7 @@ TEST(Parallel, TwoThreadsAgreeWithOne) {
   ASSERT_EQ(a->particles.size(), b->particles.size());
   double worst = 0;
   for (std::size_t i = 0; i < a->particles.size(); ++i)
-    worst = std::max(worst, norm(a->particles.x[i] - b->particles.x[slot_of(*b, a->particles.id[i])]));
+    worst =
+        std::max(worst, norm(a->particles.x[i] - b->particles.x[slot_of(*b, a->particles.id[i])]));
   EXPECT_LT(worst, 1e-12);
 }

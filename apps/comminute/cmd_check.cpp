@@ -13,15 +13,18 @@ std::function<int()> setup_check(CLI::App& sub) {
   return [path] {
     LoadedCase c = load_dem_case(*path);
     const Simulation& sim = *c.dem.sim;
-    fmt::print("{}: valid\n  {} material(s), {} wall(s), {} particle(s) placed so far, end time {} s\n  {}\n",
-               *path, sim.materials.size(), sim.walls.size(), sim.particles.size(), c.dem.end_time,
-               c.dem.time_step_note);
+    fmt::print(
+        "{}: valid\n  {} material(s), {} wall(s), {} particle(s) placed so far, end time {} s\n  "
+        "{}\n",
+        *path, sim.materials.size(), sim.walls.size(), sim.particles.size(), c.dem.end_time,
+        c.dem.time_step_note);
     for (const auto& w : c.dem.warnings) fmt::print("warning: {}\n", w);
     return 0;
   };
 }
 
-const bool registered = add_command({"check", "Validate a case file without running it", &setup_check});
+const bool registered =
+    add_command({"check", "Validate a case file without running it", &setup_check});
 
 }  // namespace
 }  // namespace comminute::app

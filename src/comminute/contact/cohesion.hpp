@@ -11,7 +11,8 @@ class Cohesion {
   virtual ~Cohesion() = default;
   virtual std::string name() const = 0;
   // Adds the (attractive, negative) adhesive normal force for a touching contact.
-  virtual void compute(const ContactKinematics& k, const PairParameters& p, ContactForces& out) const = 0;
+  virtual void compute(const ContactKinematics& k, const PairParameters& p,
+                       ContactForces& out) const = 0;
 };
 
 using CohesionRegistry = Registry<Cohesion>;

@@ -16,14 +16,18 @@ class ConstantTorqueRolling final : public RollingResistance {
   void compute(const ContactKinematics& k, const PairParameters& p, ContactHistory&,
                ContactForces& out) const override {
     // rolling part of the relative angular velocity (twist about the normal excluded)
-    const Vec3 wr = k.relative_angular_velocity - dot(k.relative_angular_velocity, k.normal) * k.normal;
+    const Vec3 wr =
+        k.relative_angular_velocity - dot(k.relative_angular_velocity, k.normal) * k.normal;
     const double wn = norm(wr);
     if (wn <= 0.0) return;
     const double cap = k.effective_inertia * wn / k.dt;
-    const double m = std::min(p.rolling_friction * k.effective_radius * std::abs(out.normal_force), cap);
+    const double m =
+        std::min(p.rolling_friction * k.effective_radius * std::abs(out.normal_force), cap);
     out.rolling_torque += (-m / wn) * wr;
     // kinetic energy of the relative rotation removed by the torque over the step
-    out.friction_dissipation += m * wn * k.dt - (k.effective_inertia > 0 ? 0.5 * m * m * k.dt * k.dt / k.effective_inertia : 0.0);
+    out.friction_dissipation +=
+        m * wn * k.dt -
+        (k.effective_inertia > 0 ? 0.5 * m * m * k.dt * k.dt / k.effective_inertia : 0.0);
   }
 };
 

@@ -15,7 +15,8 @@ class EpsdRolling final : public RollingResistance {
   void compute(const ContactKinematics& k, const PairParameters& p, ContactHistory& h,
                ContactForces& out) const override {
     const double r = k.effective_radius;
-    const Vec3 wr = k.relative_angular_velocity - dot(k.relative_angular_velocity, k.normal) * k.normal;
+    const Vec3 wr =
+        k.relative_angular_velocity - dot(k.relative_angular_velocity, k.normal) * k.normal;
     // k_n from the secant stiffness of the normal force
     const double kn = k.overlap > 0 ? std::abs(out.elastic_normal_force) / k.overlap : 0.0;
     const double kr = 2.25 * kn * p.rolling_friction * p.rolling_friction * r * r;

@@ -37,9 +37,9 @@ class LinearSpringDashpot final : public ContactLaw {
   ContactOptions opt_;
 };
 
-const bool registered = ContactLawRegistry::add("linear_spring_dashpot", [](const ContactOptions& o) {
-  return std::make_unique<LinearSpringDashpot>(o);
-});
+const bool registered = ContactLawRegistry::add(
+    "linear_spring_dashpot",
+    [](const ContactOptions& o) { return std::make_unique<LinearSpringDashpot>(o); });
 
 }  // namespace
 }  // namespace comminute

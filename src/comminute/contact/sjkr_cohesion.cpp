@@ -11,7 +11,8 @@ namespace {
 class SjkrCohesion final : public Cohesion {
  public:
   std::string name() const override { return "sjkr"; }
-  void compute(const ContactKinematics& k, const PairParameters& p, ContactForces& out) const override {
+  void compute(const ContactKinematics& k, const PairParameters& p,
+               ContactForces& out) const override {
     const double area = 2.0 * units::pi * k.effective_radius * k.overlap;
     const double f = p.cohesion_energy_density * area;
     out.normal_force -= f;

@@ -14,7 +14,7 @@ namespace comminute {
 // Sets out.tangential_force, adds to out.stored_energy, out.damping_dissipation,
 // out.friction_dissipation.
 inline void coulomb_tangential(const ContactKinematics& k, double kt, double ct, double limit,
-                        ContactHistory& h, ContactForces& out) {
+                               ContactHistory& h, ContactForces& out) {
   Vec3 xi = h.tangential_spring;
   // rotate into the current tangent plane, preserving the magnitude
   const double len2 = norm2(xi);

@@ -29,7 +29,8 @@ class Archive {
   std::vector<T> get(const std::string& name) const {
     auto it = data_.find(name);
     if (it == data_.end()) throw Error("checkpoint has no entry '" + name + "'");
-    if (it->second.size() % sizeof(T) != 0) throw Error("checkpoint entry '" + name + "' has a wrong size");
+    if (it->second.size() % sizeof(T) != 0)
+      throw Error("checkpoint entry '" + name + "' has a wrong size");
     std::vector<T> v(it->second.size() / sizeof(T));
     if (!v.empty()) std::memcpy(v.data(), it->second.data(), it->second.size());
     return v;

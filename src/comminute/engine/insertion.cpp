@@ -64,7 +64,8 @@ std::uint64_t InsertionModule::place(Simulation& sim, std::uint64_t n, int attem
   for (std::uint32_t i = 0; i < p.size(); ++i) {
     bool in = true;
     for (int a = 0; a < 3; ++a)
-      in = in && p.x[i][a] + p.radius[i] > lo[a] - 2 * rmax && p.x[i][a] - p.radius[i] < hi[a] + 2 * rmax;
+      in = in && p.x[i][a] + p.radius[i] > lo[a] - 2 * rmax &&
+           p.x[i][a] - p.radius[i] < hi[a] + 2 * rmax;
     if (in) {
       near.push_back(i);
       rmax = std::max(rmax, p.radius[i]);

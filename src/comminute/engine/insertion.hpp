@@ -26,8 +26,8 @@ struct InsertionSpec {
   double rate = 0;             // pour: particles per second
   double start = 0;            // pour: s
   double end = std::numeric_limits<double>::infinity();  // pour: s
-  double interval = 1e-3;      // pour: s between insertion batches
-  Vec3 velocity;               // m/s
+  double interval = 1e-3;                                // pour: s between insertion batches
+  Vec3 velocity;                                         // m/s
   double velocity_spread = 0;  // m/s, uniform random in [-spread, spread] per component
   std::uint64_t stream = 0;    // RNG stream (from the insertion's position in the case file)
 };

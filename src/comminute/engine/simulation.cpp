@@ -150,7 +150,8 @@ void Simulation::build_wall_candidates() {
   std::vector<WallContact> found;
   const auto& p = particles;
   for (std::uint32_t w = 0; w < walls.size(); ++w) {
-    wall_full_scan_[w] = walls[w]->surface_moves() && norm2(walls[w]->kinematics.angular_velocity) > 0;
+    wall_full_scan_[w] =
+        walls[w]->surface_moves() && norm2(walls[w]->kinematics.angular_velocity) > 0;
     for (std::uint32_t i = 0; i < p.size(); ++i) {
       found.clear();
       const bool near = walls[w]->contacts(p.x[i], p.radius[i], options.skin, found) > 0;
@@ -200,26 +201,21 @@ struct ThreadTally {
 };
 }  // namespace
 
-void Simulation::reduce_thread_buffers() {
-  auto& p = particles;
-  const std::size_t n = p.size();
-  const std::size_t nb = thread_force_.size();
-  if (nb == 0) return;
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t b = 0; b < nb; ++b) {
-      p.f[i] += thread_force_[b][i];
-      p.t[i] += thread_torque_[b][i];
-    }
-}
-
 void Simulation::particle_particle_forces() {
+  // Each thread owns a contiguous range of particle slots and the pairs they own (pairs are
+  // grouped by owner), split so that the threads get equal numbers of pairs. A thread writes the
+  // forces of its own particles directly; a pair whose other particle belongs to another thread
+  // queues that particle's share, added after the loop in thread order. No atomics, no
+  // per-thread copies of the force arrays, and the same thread count gives the same sums.
   auto& p = particles;
   const std::size_t n = p.size();
   const std::size_t npairs = nlist_.size();
   const int nt = npairs >= 2 * kParallelMin ? max_threads() : 1;
-  thread_force_.resize(static_cast<std::size_t>(nt - 1));
-  thread_torque_.resize(static_cast<std::size_t>(nt - 1));
+  const auto& rows = nlist_.rows();
+  std::vector<std::uint32_t> owner_begin(static_cast<std::size_t>(nt) + 1, 0);
+  owner_begin[static_cast<std::size_t>(nt)] = static_cast<std::uint32_t>(n);
+  for (int t = 1; t < nt; ++t) owner_begin[t] = npairs == 0 ? 0 : nlist_.first[npairs * t / nt];
+  cross_.resize(static_cast<std::size_t>(nt));
   std::vector<ThreadTally> tally(static_cast<std::size_t>(nt));
   const ContactLaw& contact_law = *law;
 #pragma omp parallel num_threads(nt)
@@ -227,16 +223,11 @@ void Simulation::particle_particle_forces() {
     const int t = thread_id();
     Vec3* F = p.f.data();
     Vec3* T = p.t.data();
-    if (t > 0) {
-      auto& bf = thread_force_[t - 1];
-      auto& bt = thread_torque_[t - 1];
-      bf.assign(n, Vec3{});
-      bt.assign(n, Vec3{});
-      F = bf.data();
-      T = bt.data();
-    }
+    const std::uint32_t own0 = owner_begin[t], own1 = owner_begin[t + 1];
+    auto& queued = cross_[t];
+    queued.clear();
     ThreadTally& tl = tally[t];
-    const std::size_t k0 = npairs * t / nt, k1 = npairs * (t + 1) / nt;
+    const std::size_t k0 = rows[own0], k1 = rows[own1];
     ContactKinematics ck;
     ck.dt = dt;
     for (std::size_t k = k0; k < k1; ++k) {
@@ -283,12 +274,21 @@ void Simulation::particle_particle_forces() {
       tl.elastic += out.stored_energy;
       const Vec3 fc = out.normal_force * nrm + out.tangential_force;
       F[i] += fc;
-      F[j] -= fc;
       T[i] += out.rolling_torque - ri * cross(nrm, out.tangential_force);
-      T[j] -= out.rolling_torque + rj * cross(nrm, out.tangential_force);
+      const Vec3 tj = -(out.rolling_torque + rj * cross(nrm, out.tangential_force));
+      if (j >= own0 && j < own1) {
+        F[j] -= fc;
+        T[j] += tj;
+      } else {
+        queued.push_back({j, -fc, tj});
+      }
     }
   }
-  reduce_thread_buffers();
+  for (const auto& list : cross_)
+    for (const auto& c : list) {
+      p.f[c.particle] += c.force;
+      p.t[c.particle] += c.torque;
+    }
   for (const auto& tl : tally) {
     ledger.damping += tl.damping;
     ledger.friction += tl.friction;

@@ -5,8 +5,8 @@
 #include <memory>
 #include <vector>
 
-#include "comminute/contact/contact_law.hpp"
 #include "comminute/contact/cohesion.hpp"
+#include "comminute/contact/contact_law.hpp"
 #include "comminute/contact/rolling_resistance.hpp"
 #include "comminute/engine/module.hpp"
 #include "comminute/geometry/wall.hpp"
@@ -22,7 +22,7 @@ struct WallContactRecord {
   std::uint32_t particle = 0;  // current slot
   std::uint32_t wall = 0;
   std::int32_t feature = 0;
-  std::uint64_t id = 0;        // particle id
+  std::uint64_t id = 0;  // particle id
   ContactHistory history;
 };
 
@@ -38,8 +38,8 @@ struct Observables {
   double time = 0;
   std::uint64_t step = 0;
   std::size_t particles = 0;
-  std::size_t contacts = 0;       // particle–particle contacts with overlap > 0
-  std::size_t wall_contacts = 0;  // particle–wall contacts with overlap > 0
+  std::size_t contacts = 0;          // particle–particle contacts with overlap > 0
+  std::size_t wall_contacts = 0;     // particle–wall contacts with overlap > 0
   double kinetic_translational = 0;  // J
   double kinetic_rotational = 0;     // J
   double potential_gravity = 0;      // J, relative to z = 0 along -gravity
@@ -48,8 +48,8 @@ struct Observables {
 };
 
 struct SimulationOptions {
-  double skin = 0;  // m, Verlet skin (0: 0.2 x mean diameter at the first build with particles)
-  int sort_every = 20;        // re-sort particles by cell every this many list rebuilds (0: never)
+  double skin = 0;      // m, Verlet skin (0: 0.2 x mean diameter at the first build with particles)
+  int sort_every = 20;  // re-sort particles by cell every this many list rebuilds (0: never)
 };
 
 class Simulation {
@@ -100,7 +100,6 @@ class Simulation {
   void particle_wall_forces();
   void rebuild();
   void build_wall_candidates();
-  void reduce_thread_buffers();
   void kick_drift();
   bool kick();
   [[noreturn]] void report_non_finite() const;
@@ -111,7 +110,11 @@ class Simulation {
   std::vector<std::uint8_t> wall_full_scan_;        // per wall: surface moves, check every step
   std::vector<double> wall_travel_;                 // per wall: distance moved since the build
   std::vector<Vec3> x_at_build_;
-  std::vector<std::vector<Vec3>> thread_force_, thread_torque_;  // threads 1.. (0 writes p.f)
+  struct CrossForce {  // a pair's share for a particle owned by another thread
+    std::uint32_t particle;
+    Vec3 force, torque;
+  };
+  std::vector<std::vector<CrossForce>> cross_;  // per thread, reused
   bool need_rebuild_ = true;
   bool forces_cleared_ = false;
   bool is_setup_ = false;

@@ -33,7 +33,8 @@ void BoxWall::advance(double dt) {
 SurfaceMesh BoxWall::surface(double) const {
   SurfaceMesh m;
   for (int k = 0; k < 8; ++k)
-    m.vertices.push_back({(k & 1) ? hi_.x : lo_.x, (k & 2) ? hi_.y : lo_.y, (k & 4) ? hi_.z : lo_.z});
+    m.vertices.push_back(
+        {(k & 1) ? hi_.x : lo_.x, (k & 2) ? hi_.y : lo_.y, (k & 4) ? hi_.z : lo_.z});
   // two triangles per closed face, corners listed counter-clockwise seen from inside
   const std::array<std::array<std::uint32_t, 4>, 6> quads = {
       {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}}};

@@ -11,7 +11,8 @@ class BoxWall : public Wall {
  public:
   BoxWall(const Vec3& lo, const Vec3& hi, std::array<bool, 6> open);
   std::string type() const override { return "box"; }
-  int contacts(const Vec3& x, double r, double margin, std::vector<WallContact>& out) const override;
+  int contacts(const Vec3& x, double r, double margin,
+               std::vector<WallContact>& out) const override;
   void advance(double dt) override;
   SurfaceMesh surface(double extent) const override;
   void save(Archive& a, const std::string& prefix) const override;

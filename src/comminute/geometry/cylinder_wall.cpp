@@ -10,12 +10,17 @@ namespace comminute {
 
 CylinderWall::CylinderWall(const Vec3& center, const Vec3& axis, double radius, double length,
                            bool inside, bool caps)
-    : center_(center), axis_(axis / norm(axis)), radius_(radius), length_(length),
-      inside_(inside), caps_(caps) {
+    : center_(center),
+      axis_(axis / norm(axis)),
+      radius_(radius),
+      length_(length),
+      inside_(inside),
+      caps_(caps) {
   kinematics.center = center;
 }
 
-int CylinderWall::contacts(const Vec3& x, double r, double margin, std::vector<WallContact>& out) const {
+int CylinderWall::contacts(const Vec3& x, double r, double margin,
+                           std::vector<WallContact>& out) const {
   const Vec3 d = x - center_;
   const double s = dot(d, axis_);  // axial coordinate
   const Vec3 radial = d - s * axis_;

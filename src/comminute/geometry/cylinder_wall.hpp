@@ -13,7 +13,8 @@ class CylinderWall : public Wall {
   CylinderWall(const Vec3& center, const Vec3& axis, double radius, double length, bool inside,
                bool caps);
   std::string type() const override { return "cylinder"; }
-  int contacts(const Vec3& x, double r, double margin, std::vector<WallContact>& out) const override;
+  int contacts(const Vec3& x, double r, double margin,
+               std::vector<WallContact>& out) const override;
   void advance(double dt) override;
   SurfaceMesh surface(double extent) const override;
   bool surface_moves() const override;

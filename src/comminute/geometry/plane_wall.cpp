@@ -7,7 +7,8 @@ namespace comminute {
 PlaneWall::PlaneWall(const Vec3& point, const Vec3& normal)
     : point_(point), normal_(normal / norm(normal)) {}
 
-int PlaneWall::contacts(const Vec3& x, double r, double margin, std::vector<WallContact>& out) const {
+int PlaneWall::contacts(const Vec3& x, double r, double margin,
+                        std::vector<WallContact>& out) const {
   const double d = dot(x - point_, normal_);
   if (d >= r + margin) return 0;
   out.push_back({normal_, x - d * normal_, r - d, 0});

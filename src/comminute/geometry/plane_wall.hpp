@@ -8,7 +8,8 @@ class PlaneWall : public Wall {
  public:
   PlaneWall(const Vec3& point, const Vec3& normal);
   std::string type() const override { return "plane"; }
-  int contacts(const Vec3& x, double r, double margin, std::vector<WallContact>& out) const override;
+  int contacts(const Vec3& x, double r, double margin,
+               std::vector<WallContact>& out) const override;
   void advance(double dt) override;
   SurfaceMesh surface(double extent) const override;
   bool surface_moves() const override;

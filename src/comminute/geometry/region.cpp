@@ -31,8 +31,8 @@ void Region::bounds(Vec3& lo_out, Vec3& hi_out) const {
   }
   for (int a = 0; a < 3; ++a) {
     // extent of a cylinder along axis a: half-length |axis_a| + radius sqrt(1 - axis_a^2)
-    const double e = 0.5 * length * std::abs(axis[a]) +
-                     radius * std::sqrt(std::max(0.0, 1 - axis[a] * axis[a]));
+    const double e =
+        0.5 * length * std::abs(axis[a]) + radius * std::sqrt(std::max(0.0, 1 - axis[a] * axis[a]));
     lo_out[a] = center[a] - e;
     hi_out[a] = center[a] + e;
   }

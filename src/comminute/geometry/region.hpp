@@ -7,8 +7,8 @@ namespace comminute {
 
 struct Region {
   enum class Shape { box, cylinder } shape = Shape::box;
-  Vec3 lo, hi;            // box corners, m
-  Vec3 center, axis{0, 0, 1};  // cylinder: centre of the axis, unit axis
+  Vec3 lo, hi;                    // box corners, m
+  Vec3 center, axis{0, 0, 1};     // cylinder: centre of the axis, unit axis
   double radius = 0, length = 0;  // cylinder, m
 
   double volume() const;

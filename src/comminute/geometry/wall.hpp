@@ -25,10 +25,10 @@ struct Kinematics {
 };
 
 struct WallContact {
-  Vec3 normal;        // unit, from the wall into the particle
-  Vec3 point;         // contact point on the wall surface, m
-  double overlap = 0; // m (> 0 when touching; candidates within the skin may be <= 0)
-  int feature = 0;    // which face/edge/triangle (history key, stable over time)
+  Vec3 normal;         // unit, from the wall into the particle
+  Vec3 point;          // contact point on the wall surface, m
+  double overlap = 0;  // m (> 0 when touching; candidates within the skin may be <= 0)
+  int feature = 0;     // which face/edge/triangle (history key, stable over time)
 };
 
 // A triangle surface for visualisation (ParaView) of any wall.
@@ -42,7 +42,8 @@ class Wall {
   virtual ~Wall() = default;
   virtual std::string type() const = 0;
   // Appends the features of this wall closer to sphere (x, r) than r + margin. Returns the count.
-  virtual int contacts(const Vec3& x, double r, double margin, std::vector<WallContact>& out) const = 0;
+  virtual int contacts(const Vec3& x, double r, double margin,
+                       std::vector<WallContact>& out) const = 0;
   // Moves the geometry rigidly over dt with the current kinematics.
   virtual void advance(double dt) = 0;
   // Triangulated surface for output; `extent` (m) bounds infinite walls.
@@ -54,7 +55,7 @@ class Wall {
   virtual void save(Archive& a, const std::string& prefix) const = 0;
   virtual void load(const Archive& a, const std::string& prefix) = 0;
 
-  std::string name;           // from the case file, used in outputs
+  std::string name;  // from the case file, used in outputs
   std::uint16_t material = 0;
   Kinematics kinematics;
   Vec3 force;   // N, total force exerted by particles on the wall in the last step

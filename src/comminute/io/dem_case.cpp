@@ -146,8 +146,13 @@ std::shared_ptr<const SizeDistribution> read_size(const CaseTable& t) {
   return SizeDistributionRegistry::create(kind, p);
 }
 
-// Returns the smallest particle radius the insertion can create (for the time step).
-double read_insertion(const CaseTable& t, std::size_t index, Simulation& sim) {
+// The smallest particle an insertion can create, and its material (for the time step).
+struct SmallestParticle {
+  double radius;
+  std::uint16_t material;
+};
+
+SmallestParticle read_insertion(const CaseTable& t, std::size_t index, Simulation& sim) {
   const std::string type = t.choice("type", {"fill", "pour", "data_file"});
   const std::uint16_t mat = material_index(t, "material", sim);
   if (type == "data_file") {
@@ -158,7 +163,7 @@ double read_insertion(const CaseTable& t, std::size_t index, Simulation& sim) {
       sim.particles.add(p);
       rmin = std::min(rmin, p.radius);
     }
-    return rmin;
+    return {rmin, mat};
   }
   InsertionSpec s;
   s.label = fmt::format("insert[{}]", index);
@@ -180,11 +185,12 @@ double read_insertion(const CaseTable& t, std::size_t index, Simulation& sim) {
     const bool has_count = t.has("count"), has_fraction = t.has("volume_fraction");
     if (has_count == has_fraction) t.fail({}, "give exactly one of 'count' or 'volume_fraction'");
     if (has_count) s.count = static_cast<std::uint64_t>(t.integer("count", 1, 1'000'000'000));
-    if (has_fraction) s.volume_fraction = t.number("volume_fraction", Limits{0.0, 0.5, true, false});
+    if (has_fraction)
+      s.volume_fraction = t.number("volume_fraction", Limits{0.0, 0.5, true, false});
   }
   const double rmin = 0.5 * s.size->min_diameter();
   sim.modules.push_back(std::make_unique<InsertionModule>(std::move(s), sim.seed));
-  return rmin;
+  return {rmin, mat};
 }
 
 }  // namespace
@@ -194,7 +200,8 @@ DemCase build_dem_case(const CaseTable& root) {
   out.sim = std::make_unique<Simulation>();
   Simulation& sim = *out.sim;
   const CaseTable s = root.table("simulation");
-  sim.seed = static_cast<std::uint64_t>(s.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
+  sim.seed =
+      static_cast<std::uint64_t>(s.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
   out.end_time = s.number("end_time", kPositive);
   sim.gravity = s.vec3("gravity", Limits::any(), {0, 0, -9.81});
   sim.options.skin = s.number("skin", Limits::non_negative(), 0.0);
@@ -206,24 +213,26 @@ DemCase build_dem_case(const CaseTable& root) {
   const auto walls = root.tables("walls");
   for (std::size_t k = 0; k < walls.size(); ++k) sim.walls.push_back(build_wall(walls[k], k, sim));
 
-  double rmin = std::numeric_limits<double>::infinity();
   const auto inserts = root.tables("insert");
   if (inserts.empty()) root.fail({}, "no particles: add at least one [[insert]] table");
-  for (std::size_t k = 0; k < inserts.size(); ++k)
-    rmin = std::min(rmin, read_insertion(inserts[k], k, sim));
-
-  // Time step: a fraction of the Rayleigh time of the smallest, softest particle (MODELS.md).
+  // Time step: a fraction of the Rayleigh time of the smallest particle of each inserted material
+  // (MODELS.md); wall materials do not count.
   double t_rayleigh = std::numeric_limits<double>::infinity();
-  for (std::size_t m = 0; m < sim.materials.size(); ++m) {
-    const Material& mat = sim.materials.material(static_cast<std::uint16_t>(m));
-    t_rayleigh = std::min(t_rayleigh, units::pi * rmin * std::sqrt(mat.density / mat.shear_modulus()) /
+  SmallestParticle smallest{std::numeric_limits<double>::infinity(), 0};
+  for (std::size_t k = 0; k < inserts.size(); ++k) {
+    const SmallestParticle sp = read_insertion(inserts[k], k, sim);
+    const Material& mat = sim.materials.material(sp.material);
+    t_rayleigh = std::min(t_rayleigh, units::pi * sp.radius *
+                                          std::sqrt(mat.density / mat.shear_modulus()) /
                                           (0.1631 * mat.poisson_ratio + 0.8766));
+    if (sp.radius < smallest.radius) smallest = sp;
   }
   const double fraction = s.number("time_step_fraction", Limits{0.0, 1.0, true, false}, 0.2);
   if (s.has("time_step")) {
     sim.dt = s.number("time_step", kPositive);
-    out.time_step_note = fmt::format("time step {:.4g} s (set) = {:.1f} % of the Rayleigh time {:.4g} s",
-                                     sim.dt, 100 * sim.dt / t_rayleigh, t_rayleigh);
+    out.time_step_note =
+        fmt::format("time step {:.4g} s (set) = {:.1f} % of the Rayleigh time {:.4g} s", sim.dt,
+                    100 * sim.dt / t_rayleigh, t_rayleigh);
     if (sim.dt > 0.3 * t_rayleigh)
       out.warnings.push_back(fmt::format(
           "the time step {:.4g} s is {:.0f} % of the Rayleigh time {:.4g} s of the smallest "
@@ -236,9 +245,10 @@ DemCase build_dem_case(const CaseTable& root) {
   }
   if (sim.law->name() == "linear_spring_dashpot") {
     // linear contact: resolve the contact time pi sqrt(m*/k) of the lightest pair with >= 10 steps
-    const double density = sim.materials.material(0).density;
-    const double mstar = 0.5 * density * units::sphere_volume(rmin);
-    const double tc = units::pi * std::sqrt(mstar / sim.law->normal_stiffness({}, rmin, mstar, 0));
+    const double density = sim.materials.material(smallest.material).density;
+    const double mstar = 0.5 * density * units::sphere_volume(smallest.radius);
+    const double tc =
+        units::pi * std::sqrt(mstar / sim.law->normal_stiffness({}, smallest.radius, mstar, 0));
     if (sim.dt > tc / 10)
       out.warnings.push_back(fmt::format(
           "the time step {:.4g} s resolves the linear contact time {:.4g} s with fewer than 10 "

@@ -14,8 +14,8 @@ namespace comminute::io {
 
 struct DemCase {
   std::unique_ptr<Simulation> sim;
-  double end_time = 0;              // s
-  std::string time_step_note;       // how the step was chosen, for the log
+  double end_time = 0;         // s
+  std::string time_step_note;  // how the step was chosen, for the log
   std::vector<std::string> warnings;
 };
 

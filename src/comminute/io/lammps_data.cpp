@@ -48,7 +48,8 @@ std::vector<ParticleInit> read_lammps_data(const std::filesystem::path& file) {
     } else {
       auto it = by_id.find(id);
       if (it == by_id.end())
-        throw InputError(file.string(), "", lineno, fmt::format("velocity for unknown atom {}", id));
+        throw InputError(file.string(), "", lineno,
+                         fmt::format("velocity for unknown atom {}", id));
       ParticleInit& p = out[it->second];
       if (!(s >> p.v.x >> p.v.y >> p.v.z >> p.w.x >> p.w.y >> p.w.z))
         throw InputError(file.string(), "", lineno, "expected 'id vx vy vz wx wy wz'");

@@ -16,9 +16,10 @@ Vec3 unit_vector(const CaseTable& t, std::string_view key, const Vec3& fallback)
   return v / norm(v);
 }
 
-const bool plane = WallBuilderRegistry::add("plane", [](const CaseTable& t) -> std::unique_ptr<Wall> {
-  return std::make_unique<PlaneWall>(t.vec3("point"), unit_vector(t, "normal", {0, 0, 1}));
-});
+const bool plane =
+    WallBuilderRegistry::add("plane", [](const CaseTable& t) -> std::unique_ptr<Wall> {
+      return std::make_unique<PlaneWall>(t.vec3("point"), unit_vector(t, "normal", {0, 0, 1}));
+    });
 
 const bool box = WallBuilderRegistry::add("box", [](const CaseTable& t) -> std::unique_ptr<Wall> {
   const Vec3 lo = t.vec3("lo"), hi = t.vec3("hi");
@@ -40,9 +41,9 @@ const bool box = WallBuilderRegistry::add("box", [](const CaseTable& t) -> std::
 const bool cylinder =
     WallBuilderRegistry::add("cylinder", [](const CaseTable& t) -> std::unique_ptr<Wall> {
       return std::make_unique<CylinderWall>(
-          t.vec3("center"), unit_vector(t, "axis", {0, 0, 1}), t.number("radius", Limits::positive()),
-          t.number("length", Limits::positive()), t.choice("side", {"inside", "outside"}) == "inside",
-          t.boolean("caps", false));
+          t.vec3("center"), unit_vector(t, "axis", {0, 0, 1}),
+          t.number("radius", Limits::positive()), t.number("length", Limits::positive()),
+          t.choice("side", {"inside", "outside"}) == "inside", t.boolean("caps", false));
     });
 
 }  // namespace

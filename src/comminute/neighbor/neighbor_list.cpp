@@ -106,8 +106,7 @@ void NeighborList::build(const ParticleStore& p, double skin) {
         for_cells_around(large_grid, large_grid.cell_of(xi), 1, [&](std::uint32_t j) {
           if (j > i) consider(j);
         });
-        const int reach =
-            static_cast<int>(std::ceil((ri + r_ref + skin) / small_grid.edge()));
+        const int reach = static_cast<int>(std::ceil((ri + r_ref + skin) / small_grid.edge()));
         for_cells_around(small_grid, small_grid.cell_of(xi), reach, consider);
       }
     }

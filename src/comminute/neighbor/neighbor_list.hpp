@@ -38,11 +38,13 @@ class NeighborList {
                std::vector<ContactHistory> h, std::vector<std::uint8_t> t,
                std::vector<std::uint64_t> ids, std::vector<std::uint8_t> large);
   const std::vector<std::uint8_t>& large() const { return large_; }
+  // CSR offsets: the pairs owned by slot i are [rows()[i], rows()[i + 1]).
+  const std::vector<std::uint32_t>& rows() const { return row_; }
 
  private:
-  std::vector<std::uint64_t> ids_;    // p.id at build
-  std::vector<std::uint8_t> large_;   // 1 for particles in the large-particle grid
-  std::vector<std::uint32_t> row_;    // CSR offsets of rows by owner slot (size n+1)
+  std::vector<std::uint64_t> ids_;   // p.id at build
+  std::vector<std::uint8_t> large_;  // 1 for particles in the large-particle grid
+  std::vector<std::uint32_t> row_;   // CSR offsets of rows by owner slot (size n+1)
   // scratch reused between builds
   struct SavedContact {
     std::uint64_t a, b;  // ids of owner and other

@@ -34,7 +34,8 @@ void MaterialTable::rebuild_pair(std::uint16_t a, std::uint16_t b, const PairInp
   PairParameters q;
   static_cast<PairInput&>(q) = p;
   const double v1 = m1.poisson_ratio, v2 = m2.poisson_ratio;
-  q.effective_modulus = 1.0 / ((1 - v1 * v1) / m1.youngs_modulus + (1 - v2 * v2) / m2.youngs_modulus);
+  q.effective_modulus =
+      1.0 / ((1 - v1 * v1) / m1.youngs_modulus + (1 - v2 * v2) / m2.youngs_modulus);
   q.effective_shear_modulus = 1.0 / (2 * (2 - v1) * (1 + v1) / m1.youngs_modulus +
                                      2 * (2 - v2) * (1 + v2) / m2.youngs_modulus);
   q.damping_beta = damping_beta(p.restitution);

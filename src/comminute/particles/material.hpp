@@ -16,18 +16,18 @@ struct Material {
 
 // What a user sets for a pair of materials.
 struct PairInput {
-  double restitution = 0.5;          // normal coefficient of restitution, (0, 1]
-  double friction = 0.5;             // Coulomb sliding friction coefficient
-  double rolling_friction = 0.0;     // rolling resistance coefficient (dimensionless)
+  double restitution = 0.5;              // normal coefficient of restitution, (0, 1]
+  double friction = 0.5;                 // Coulomb sliding friction coefficient
+  double rolling_friction = 0.0;         // rolling resistance coefficient (dimensionless)
   double cohesion_energy_density = 0.0;  // J/m3, SJKR cohesion (LIGGGHTS' cohesionEnergyDensity)
-  double rolling_damping = 0.0;      // viscous damping ratio of the EPSD rolling model
+  double rolling_damping = 0.0;          // viscous damping ratio of the EPSD rolling model
 };
 
 // PairInput plus the derived constants the contact laws use.
 struct PairParameters : PairInput {
   double effective_modulus = 0.0;        // E*, 1/E* = (1-v1^2)/E1 + (1-v2^2)/E2  [Pa]
   double effective_shear_modulus = 0.0;  // G*, 1/G* = 2(2-v1)(1+v1)/E1 + ...      [Pa]
-  double damping_beta = 0.0;        // beta = ln e / sqrt(ln^2 e + pi^2) (<= 0), linear law
+  double damping_beta = 0.0;             // beta = ln e / sqrt(ln^2 e + pi^2) (<= 0), linear law
 };
 
 class MaterialTable {

@@ -23,8 +23,8 @@ inline constexpr std::uint32_t remove = 1u << 3;       // marked for removal at 
 
 struct ParticleInit {
   Vec3 x, v, w;
-  double radius = 0.0;  // m
-  double density = 0.0; // kg/m3 (mass and inertia follow for a solid sphere)
+  double radius = 0.0;   // m
+  double density = 0.0;  // kg/m3 (mass and inertia follow for a solid sphere)
   std::uint16_t material = 0;
   std::uint32_t flags = 0;
 };
@@ -33,10 +33,10 @@ class ParticleStore {
  public:
   // Kinematics (SI): position m, velocity m/s, angular velocity rad/s, force N, torque N m.
   std::vector<Vec3> x, v, w, f, t;
-  std::vector<double> radius;      // m
-  std::vector<double> mass;        // kg
-  std::vector<double> inertia;     // kg m2 (solid sphere 2/5 m r^2 unless set otherwise)
-  std::vector<std::uint64_t> id;   // unique, never reused
+  std::vector<double> radius;     // m
+  std::vector<double> mass;       // kg
+  std::vector<double> inertia;    // kg m2 (solid sphere 2/5 m r^2 unless set otherwise)
+  std::vector<std::uint64_t> id;  // unique, never reused
   std::vector<std::uint16_t> material;
   std::vector<std::uint32_t> flags;
 

@@ -23,9 +23,9 @@ class SizeDistribution {
 // Parameters read from the case file; which ones a distribution needs is its own business
 // (the case builder checks them per name).
 struct SizeParameters {
-  double diameter = 0;  // fixed
-  double min = 0, max = 0;  // uniform bounds; truncation of normal/lognormal (0 = none)
-  double mean = 0, sd = 0;  // normal
+  double diameter = 0;           // fixed
+  double min = 0, max = 0;       // uniform bounds; truncation of normal/lognormal (0 = none)
+  double mean = 0, sd = 0;       // normal
   double median = 0, sigma = 0;  // lognormal: median diameter, sd of ln d
   std::vector<double> diameters, fractions;  // table
   bool mass_fractions = true;                // table fractions by mass (else by number)

@@ -10,7 +10,9 @@
 namespace comminute {
 namespace {
 
-double sphere_volume_d(double d) { return units::pi / 6 * d * d * d; }
+double sphere_volume_d(double d) {
+  return units::pi / 6 * d * d * d;
+}
 
 // Mean of d^3 by Monte Carlo-free quadrature over the sampler's inverse CDF (midpoint, 2000 nodes).
 template <class InverseCdf>

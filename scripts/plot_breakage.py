@@ -3,8 +3,11 @@
 breakage probability versus specific energy against the model curve, energy ledger.
 
 Usage: /usr/bin/python3 scripts/plot_breakage.py <output folder> [<more folders>] [-o <png folder>]
+                                               [--platen NAME SPEED]
 The size distribution, t10 and ledger plots use the first folder; the probability plot takes one
-point per folder (drop-weight runs at different energies) against the first folder's model curve.
+point per folder (drop-weight runs at different energies) against the model curve.
+--platen NAME SPEED adds force_displacement.png: the force on wall NAME against its travel at
+SPEED m/s (slow-compression rig).
 Reads breakage_events.csv, breakage_model.csv, size_distribution.csv, breakage_ledger.csv
 written by the breakage module (docs/breakage.md).
 """
@@ -143,10 +146,37 @@ def ledger_plot(rows, out):
     plt.close(fig)
 
 
+def force_displacement(rows, wall, speed, out):
+    """Slow-compression rig: normal force on the platen against its travel (speed x time, from
+    the first step with a force), from timeseries.csv."""
+    key = next((k for k in (rows[0].keys() if rows else []) if k.startswith(wall + "_Fz")), None)
+    if key is None:
+        return
+    t = [float(r["time [s]"]) for r in rows]
+    f = [abs(float(r[key])) for r in rows]
+    start = next((k for k, v in enumerate(f) if v > 0), None)
+    if start is None:
+        return
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    ax.plot([(x - t[start]) * speed * 1e3 for x in t[start:]], f[start:])
+    ax.set_xlabel(f"{wall} travel since first contact (mm)")
+    ax.set_ylabel(f"{wall} normal force (N)")
+    ax.set_title("Force-displacement")
+    ax.grid(True, alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "force_displacement.png"), dpi=120)
+    plt.close(fig)
+
+
 def main():
     args = sys.argv[1:]
     if not args or args[0] in ("-h", "--help"):
         sys.exit(__doc__)
+    platen = None
+    if "--platen" in args:
+        k = args.index("--platen")
+        platen = (args[k + 1], float(args[k + 2]))
+        args = args[:k] + args[k + 3:]
     out = args[0]
     if "-o" in args:
         k = args.index("-o")
@@ -161,6 +191,8 @@ def main():
     t10_plot(events, model, out)
     probability_plot(runs, out)
     ledger_plot(read(os.path.join(src, "breakage_ledger.csv")), out)
+    if platen:
+        force_displacement(read(os.path.join(src, "timeseries.csv")), platen[0], platen[1], out)
     print("plots in", out)
 
 

@@ -1,0 +1,656 @@
+#include "comminute/breakage/breakage_module.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "comminute/breakage/criteria/fracture_energy.hpp"
+#include "comminute/core/atomic_file.hpp"
+#include "comminute/core/error.hpp"
+#include "comminute/core/units.hpp"
+#include "comminute/engine/simulation.hpp"
+
+namespace comminute::breakage {
+
+T10Parameters MaterialBreakage::default_t10() {
+  // Illustrative t_n family (a fit to a typical t-family chart; not published values).
+  T10Parameters p;
+  p.alpha = {0.975, 1.062, 0.918, 0.942, 0.929};
+  p.beta = {2.667, 1.955, 0.393, 0.249, 0.183};
+  return p;
+}
+
+BreakageModule::BreakageModule(std::vector<std::optional<MaterialBreakage>> per_material,
+                               BreakageOptions opt)
+    : materials_(std::move(per_material)), opt_(std::move(opt)) {}
+
+BreakageModule::~BreakageModule() {
+  try {
+    if (configured_) write_outputs();
+  } catch (...) {  // a destructor must not throw; the outputs were written at intervals
+  }
+}
+
+void BreakageModule::register_fields(ParticleStore& p) {
+  for (auto& m : materials_)
+    if (m) m->criterion->attach(p);
+  f_init_ = p.add_field("breakage.initialized", 0.0);  // 1 once strength is drawn
+  f_generation_ = p.add_field("breakage.generation", 0.0);
+  f_target_ = p.add_field("breakage.target_radius", 0.0);  // m, final radius while growing
+  f_in_event_ = p.add_field("breakage.in_event", 0.0);
+  f_energy_ = p.add_field("breakage.event_energy", 0.0);  // J/kg
+  f_force_ = p.add_field("breakage.event_force", 0.0);    // N
+  f_baseline_ = p.add_field("breakage.baseline", 0.0);    // J/kg
+  f_quiet_ = p.add_field("breakage.quiet_steps", 0.0);
+}
+
+void BreakageModule::setup(Simulation& sim) {
+  strength_rng_ = Rng(sim.seed, rng_stream::breakage);
+  placement_rng_ = Rng(sim.seed, rng_stream::placement);
+  configure(sim);
+  auto& p = sim.particles;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.field(f_init_)[i] == 0) initialize_particle(sim, i);
+}
+
+void BreakageModule::configure(Simulation& sim) {
+  auto& p = sim.particles;
+  register_fields(p);
+  n_materials_ = sim.materials.size();
+  materials_.resize(std::max(materials_.size(), n_materials_));
+  share_.assign(n_materials_ * n_materials_, 0.5);
+  for (std::size_t a = 0; a < n_materials_; ++a)
+    for (std::size_t b = 0; b < n_materials_; ++b) {
+      const Material& ma = sim.materials.material(static_cast<std::uint16_t>(a));
+      const Material& mb = sim.materials.material(static_cast<std::uint16_t>(b));
+      share_[a * n_materials_ + b] =
+          energy_share(plane_strain_modulus(ma.youngs_modulus, ma.poisson_ratio),
+                       plane_strain_modulus(mb.youngs_modulus, mb.poisson_ratio));
+    }
+  fines_mass_.resize(n_materials_, 0.0);
+  pending_ = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) pending_ += (p.flags[i] & pflag::growing) ? 1 : 0;
+  rebuilds_seen_ = sim.neighbor_rebuilds();
+  // A checkpoint written right after a replacement holds the pair list of the old slots (the
+  // engine does not save its "rebuild needed" flag): rebuild when the list does not match.
+  if (sim.pairs().ids_at_build() != p.id) sim.particles_changed();
+  if (!opt_.output_dir.empty()) std::filesystem::create_directories(opt_.output_dir);
+  configured_ = true;
+}
+
+void BreakageModule::initialize_particle(Simulation& sim, std::size_t i) {
+  auto& p = sim.particles;
+  p.field(f_init_)[i] = 1;
+  const auto& m = materials_[p.material[i]];
+  if (!m) return;
+  const double target = p.field(f_target_)[i];
+  m->criterion->initialize(p, i, 2 * (target > 0 ? target : p.radius[i]), strength_rng_);
+}
+
+namespace {
+// Normal elastic energy (J) of a fresh contact with overlap `overlap` between sphere i and a
+// sphere j (r_j > 0) or a wall (r_j = 0), from the simulation's contact law.
+double overlap_energy(const Simulation& sim, double overlap, double r_i, double m_i,
+                      std::uint16_t a, double r_j, double m_j, std::uint16_t b) {
+  if (overlap <= 0) return 0.0;
+  ContactKinematics ck;
+  ck.normal = {0, 0, 1};
+  ck.overlap = overlap;
+  ck.effective_radius = r_j > 0 ? r_i * r_j / (r_i + r_j) : r_i;
+  ck.effective_mass = m_j > 0 ? m_i * m_j / (m_i + m_j) : m_i;
+  ck.dt = 0;
+  ContactHistory h;
+  ContactForces out;
+  sim.law->compute(ck, sim.materials.pair(a, b), h, out);
+  return out.normal_elastic_energy;
+}
+}  // namespace
+
+void BreakageModule::add_energy(Simulation& sim, double joules) {
+  created_ += joules;
+  removed_ -= joules;
+  sim.ledger.removed -= joules;
+}
+
+void BreakageModule::grow(Simulation& sim) {
+  auto& p = sim.particles;
+  const std::size_t n = p.size();
+  const double eps = opt_.growth_overlap_ratio;
+  std::vector<double> limit(n, 0.0);
+  const auto& target = p.field(f_target_);
+  for (std::size_t i = 0; i < n; ++i)
+    if (p.flags[i] & pflag::growing) limit[i] = target[i];
+  const auto& nl = sim.pairs();
+  for (std::size_t k = 0; k < nl.size(); ++k) {
+    const std::uint32_t i = nl.first[k], j = nl.second[k];
+    const bool gi = p.flags[i] & pflag::growing, gj = p.flags[j] & pflag::growing;
+    if (!gi && !gj) continue;
+    if (gi && gj) {  // two growing spheres share the room up to the allowed overlap
+      const double room = norm(p.x[i] - p.x[j]) - p.radius[i] - p.radius[j] +
+                          eps * std::min(p.radius[i], p.radius[j]);
+      limit[i] = std::min(limit[i], p.radius[i] + 0.5 * room);
+      limit[j] = std::min(limit[j], p.radius[j] + 0.5 * room);
+    } else if (gi) {
+      limit[i] = radius_allowed(p.x[i], limit[i], {p.x[j], p.radius[j]}, eps);
+    } else {
+      limit[j] = radius_allowed(p.x[j], limit[j], {p.x[i], p.radius[i]}, eps);
+    }
+  }
+  std::vector<WallContact> found;
+  double grown = 0;
+  std::vector<std::uint8_t> was_growing(n, 0);
+  for (std::size_t i = 0; i < n; ++i) was_growing[i] = (p.flags[i] & pflag::growing) ? 1 : 0;
+  std::vector<double> r_before = p.radius;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(p.flags[i] & pflag::growing)) continue;
+    for (const auto& w : sim.walls) {
+      found.clear();
+      w->contacts(p.x[i], p.radius[i], target[i], found);
+      for (const auto& c : found)  // distance to the wall = r - overlap; keep overlap <= eps r
+        limit[i] = std::min(limit[i], (p.radius[i] - c.overlap) / (1.0 - eps));
+    }
+    const double r_new = std::min(
+        {target[i], p.radius[i] + opt_.growth_step * target[i], std::max(p.radius[i], limit[i])});
+    grown = std::max(grown, r_new - p.radius[i]);
+    p.radius[i] = r_new;
+    if (r_new >= target[i]) {
+      p.radius[i] = target[i];
+      p.flags[i] &= ~pflag::growing;
+      p.field(f_target_)[i] = 0;
+      --pending_;
+    }
+  }
+  // Growth at fixed positions raises the overlaps of the growing spheres: that elastic energy
+  // comes from nowhere, so it is booked (as negative removed energy) to keep the balance closed.
+  double created = 0;
+  for (std::size_t k = 0; k < nl.size(); ++k) {
+    const std::uint32_t i = nl.first[k], j = nl.second[k];
+    if (p.radius[i] == r_before[i] && p.radius[j] == r_before[j]) continue;  // nothing grew
+    const double dist = norm(p.x[i] - p.x[j]);
+    const double before = r_before[i] + r_before[j] - dist,
+                 after = p.radius[i] + p.radius[j] - dist;
+    if (after <= 0) continue;
+    created += overlap_energy(sim, after, p.radius[i], p.mass[i], p.material[i], p.radius[j],
+                              p.mass[j], p.material[j]) -
+               overlap_energy(sim, before, r_before[i], p.mass[i], p.material[i], r_before[j],
+                              p.mass[j], p.material[j]);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!was_growing[i] || p.radius[i] == r_before[i]) continue;
+    for (const auto& w : sim.walls) {
+      found.clear();
+      w->contacts(p.x[i], p.radius[i], 0.0, found);
+      for (const auto& c : found)
+        created += overlap_energy(sim, c.overlap, p.radius[i], p.mass[i], p.material[i], 0, 0,
+                                  w->material) -
+                   overlap_energy(sim, c.overlap - (p.radius[i] - r_before[i]), r_before[i],
+                                  p.mass[i], p.material[i], 0, 0, w->material);
+    }
+  }
+  add_energy(sim, created);
+  // The neighbour list holds pairs within r_i + r_j + skin at its build: growth eats that margin,
+  // so ask for a rebuild once a fragment has grown by a tenth of the skin since the last one.
+  if (sim.neighbor_rebuilds() != rebuilds_seen_) {
+    rebuilds_seen_ = sim.neighbor_rebuilds();
+    // A checkpoint written right after a replacement holds the pair list of the old slots (the
+    // engine does not save its "rebuild needed" flag): rebuild when the list does not match.
+    if (sim.pairs().ids_at_build() != p.id) sim.particles_changed();
+    growth_since_rebuild_ = 0;
+  }
+  growth_since_rebuild_ += grown;
+  if (growth_since_rebuild_ > 0.1 * sim.options.skin) {
+    sim.particles_changed();
+    growth_since_rebuild_ = 0;
+  }
+}
+
+void BreakageModule::pre_force(Simulation& sim) {
+  // After Simulation::load() modules are not set up again: configure from the restored state.
+  if (!configured_) configure(sim);
+}
+
+void BreakageModule::post_force(Simulation& sim) {
+  update_events(sim);
+}
+
+void BreakageModule::update_events(Simulation& sim) {
+  auto& p = sim.particles;
+  const std::size_t n = p.size();
+  load_.assign(n, 0.0);
+  force_.assign(n, 0.0);
+  const auto& nl = sim.pairs();
+  for (std::size_t k = 0; k < nl.size(); ++k) {
+    if (!nl.touching[k]) continue;
+    const std::uint32_t i = nl.first[k], j = nl.second[k];
+    const ContactHistory& h = nl.history[k];
+    const std::size_t a = p.material[i], b = p.material[j];
+    load_[i] += share_[a * n_materials_ + b] * h.loading_work;
+    load_[j] += share_[b * n_materials_ + a] * h.loading_work;
+    force_[i] += h.normal_force;
+    force_[j] += h.normal_force;
+  }
+  for (const auto& c : sim.wall_contacts()) {
+    const std::size_t a = p.material[c.particle], b = sim.walls[c.wall]->material;
+    load_[c.particle] += share_[a * n_materials_ + b] * c.history.loading_work;
+    force_[c.particle] += c.history.normal_force;
+  }
+  auto& in_event = p.field(f_in_event_);
+  auto& energy = p.field(f_energy_);
+  auto& force = p.field(f_force_);
+  auto& baseline = p.field(f_baseline_);
+  auto& quiet = p.field(f_quiet_);
+  const auto& target = p.field(f_target_);
+  for (std::size_t i = 0; i < n; ++i)  // particles inserted by other modules draw strength now
+    if (p.field(f_init_)[i] == 0) initialize_particle(sim, i);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& mat = materials_[p.material[i]];
+    if (!mat || (p.flags[i] & (pflag::fixed | pflag::unbreakable | pflag::remove))) continue;
+    // A growing fragment already carries its full mass and transmits real contact forces: it is
+    // assessed at its final size (the overlaps growth creates are capped, see grow()).
+    const double d = 2 * std::max(p.radius[i], target[i]);
+    const double s = load_[i] / p.mass[i];  // J/kg
+    if (d < mat->min_breakable_size) {
+      baseline[i] = s;
+      continue;
+    }
+    const BreakageCriterion& crit = *mat->criterion;
+    auto end_event = [&](bool broke) {
+      ++events_;
+      if (opt_.log_all_events && !broke) {
+        EventRecord r;
+        r.time = sim.time;
+        r.parent_id = p.id[i];
+        r.material = p.material[i];
+        r.generation = static_cast<std::uint32_t>(p.field(f_generation_)[i]);
+        r.diameter = d;
+        r.mass = p.mass[i];
+        r.specific_energy = energy[i];
+        r.peak_force = force[i];
+        r.strength = crit.strength(p, i, d);
+        r.damage_before = crit.damage(p, i);
+        log_.push_back(r);
+      }
+      if (!broke) crit.survive(p, i, d, {energy[i], force[i]});
+      in_event[i] = 0;
+      energy[i] = force[i] = 0;
+      quiet[i] = 0;
+    };
+    if (s <= 0) {  // no loaded contact: any event is over
+      if (in_event[i] != 0) end_event(false);
+      baseline[i] = 0;
+      continue;
+    }
+    if (in_event[i] == 0) {
+      if (s <= baseline[i] * (1 + 1e-12)) {
+        baseline[i] = s;  // contacts left or unloading: lower the baseline with S
+        continue;
+      }
+      in_event[i] = 1;
+      energy[i] = force[i] = 0;
+      quiet[i] = 0;
+    }
+    const double e = s - baseline[i];
+    if (e > energy[i]) {
+      energy[i] = e;
+      quiet[i] = 0;
+    } else {
+      quiet[i] += 1;
+    }
+    force[i] = std::max(force[i], force_[i]);
+    const StressingEvent ev{energy[i], force[i]};
+    if (crit.breaks(p, i, d, ev)) {
+      EventRecord r;
+      r.time = sim.time;
+      r.parent_id = p.id[i];
+      r.material = p.material[i];
+      r.generation = static_cast<std::uint32_t>(p.field(f_generation_)[i]);
+      r.diameter = d;
+      r.mass = p.mass[i];
+      r.specific_energy = energy[i];
+      r.peak_force = force[i];
+      r.strength = crit.strength(p, i, d);
+      r.damage_before = crit.damage(p, i);
+      r.broken = 1;
+      broken_ids_.push_back(p.id[i]);
+      broken_records_.push_back(r);
+      end_event(true);
+      p.flags[i] |= pflag::unbreakable;  // until it is replaced at the end of the step
+    } else if (quiet[i] >= opt_.event_end_steps) {
+      end_event(false);
+      baseline[i] = s;
+    }
+  }
+}
+
+namespace {
+// Elastic energy (J) stored now in a contact, evaluated by the contact law on a copy of its
+// history (no tangential slip, no time advance).
+double stored_energy(const Simulation& sim, std::size_t i, double other_radius, double other_mass,
+                     const Vec3& normal, double overlap, std::uint16_t other_material,
+                     const ContactHistory& h) {
+  const auto& p = sim.particles;
+  ContactKinematics ck;
+  ck.normal = normal;
+  ck.overlap = overlap;
+  ck.effective_radius =
+      other_radius > 0 ? p.radius[i] * other_radius / (p.radius[i] + other_radius) : p.radius[i];
+  ck.effective_mass =
+      other_mass > 0 ? p.mass[i] * other_mass / (p.mass[i] + other_mass) : p.mass[i];
+  ck.dt = 0;
+  ContactHistory copy = h;
+  ContactForces out;
+  sim.law->compute(ck, sim.materials.pair(p.material[i], other_material), copy, out);
+  return out.stored_energy;
+}
+}  // namespace
+
+void BreakageModule::end_of_step(Simulation& sim) {
+  const bool due = opt_.replacement_interval <= 1 ||
+                   sim.step_count % static_cast<std::uint64_t>(opt_.replacement_interval) == 0;
+  if (!broken_ids_.empty() && due) {
+    auto& p = sim.particles;
+    // Slots of the parents and the spheres around them (other parents included).
+    std::unordered_map<std::uint64_t, std::size_t> slot_of;
+    const std::unordered_set<std::uint64_t> wanted(broken_ids_.begin(), broken_ids_.end());
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (wanted.count(p.id[i])) slot_of[p.id[i]] = i;
+    std::unordered_map<std::size_t, std::vector<std::uint32_t>> around;
+    const auto& nl = sim.pairs();
+    for (std::size_t k = 0; k < nl.size(); ++k) {
+      const std::uint32_t i = nl.first[k], j = nl.second[k];
+      const bool bi = wanted.count(p.id[i]) > 0, bj = wanted.count(p.id[j]) > 0;
+      if (!bi && !bj) continue;
+      if (bi) around[i].push_back(j);
+      if (bj) around[j].push_back(i);
+      if (nl.touching[k]) {  // elastic energy that disappears with the parent's contacts
+        const Vec3 dx = p.x[i] - p.x[j];
+        const double dist = norm(dx);
+        const double ov = p.radius[i] + p.radius[j] - dist;
+        if (ov > 0 && dist > 0) {
+          const double u = stored_energy(sim, i, p.radius[j], p.mass[j], dx / dist, ov,
+                                         p.material[j], nl.history[k]);
+          removed_ += u;
+          sim.ledger.removed += u;
+        }
+      }
+    }
+    std::vector<WallContact> found;
+    for (const auto& c : sim.wall_contacts()) {
+      if (!wanted.count(p.id[c.particle])) continue;
+      found.clear();
+      sim.walls[c.wall]->contacts(p.x[c.particle], p.radius[c.particle], 0.0, found);
+      for (const auto& f : found)
+        if (f.feature == c.feature && f.overlap > 0) {
+          const double u = stored_energy(sim, c.particle, 0, 0, f.normal, f.overlap,
+                                         sim.walls[c.wall]->material, c.history);
+          removed_ += u;
+          sim.ledger.removed += u;
+        }
+    }
+    for (std::size_t b = 0; b < broken_ids_.size(); ++b) {
+      const std::size_t i = slot_of.at(broken_ids_[b]);
+      replace(sim, i, around[i], broken_records_[b]);
+    }
+    p.compact();
+    sim.particles_changed();
+    broken_ids_.clear();
+    broken_records_.clear();
+  }
+  const double interval = opt_.output_interval > 0 ? opt_.output_interval : 1000 * sim.dt;
+  if (sim.time + 0.5 * sim.dt >= next_output_) {
+    ledger_row(sim);
+    if (!opt_.output_dir.empty()) write_outputs();
+    next_output_ = sim.time + interval;
+  }
+}
+
+void BreakageModule::replace(Simulation& sim, std::size_t parent,
+                             const std::vector<std::uint32_t>& around, const EventRecord& rec_in) {
+  auto& p = sim.particles;
+  std::vector<Sphere> neighbours;
+  for (std::uint32_t j : around) neighbours.push_back({p.x[j], p.radius[j]});
+  const MaterialBreakage& mat = *materials_[p.material[parent]];
+  EventRecord rec = rec_in;
+  // A fragment that breaks while still growing counts at its final size.
+  const double r_parent = std::max(p.radius[parent], p.field(f_target_)[parent]);
+  if (p.flags[parent] & pflag::growing) --pending_;
+  const double d = 2 * r_parent;
+  const double mass = p.mass[parent];
+  const double density = mass / units::sphere_volume(r_parent);
+  // Progeny sizes (seed 002 eq. 16-18).
+  double e50b = mat.criterion->median_fracture_energy(d);
+  if (e50b <= 0) e50b = mat.reference_energy;
+  rec.t10 = mat.progeny.t10(rec.specific_energy, e50b);
+  const ProgenyDistribution dist(d, rec.t10, mat.progeny.tn(rec.t10));
+  const double min_size = std::max(mat.min_fragment_size, mat.min_fragment_ratio * d);
+  const Progeny progeny = draw_progeny(dist, mass, density, min_size, mat.fines, strength_rng_);
+  // Placement inside the parent.
+  std::vector<double> radii, masses, inertia;
+  for (const auto& f : progeny.fragments) {
+    radii.push_back(0.5 * f.diameter);
+    masses.push_back(f.mass);
+    inertia.push_back(0.4 * f.mass * 0.25 * f.diameter * f.diameter);
+  }
+  WallOverlap walls = [&sim](const Vec3& x, double r) {
+    double worst = -r;
+    std::vector<WallContact> found;
+    for (const auto& w : sim.walls) {
+      found.clear();
+      w->contacts(x, r, 0.0, found);
+      for (const auto& c : found) worst = std::max(worst, c.overlap);
+    }
+    return worst;
+  };
+  const Sphere ps{p.x[parent], r_parent};
+  const auto placed =
+      place_fragments(ps, radii, masses, neighbours, walls, opt_.placement, placement_rng_);
+  std::vector<Vec3> xs;
+  for (const auto& s : placed) xs.push_back(s.x);
+  const double released = mat.release_fraction * rec.specific_energy * mass;
+  const auto vel = fragment_velocities(p.x[parent], p.v[parent], p.w[parent], p.inertia[parent], xs,
+                                       masses, inertia, released);
+  // Energy bookkeeping: kinetic energy of the parent out, of the fragments in; fines booked as
+  // mass leave with their kinetic and gravitational potential energy.
+  double ke_out = 0.5 * mass * norm2(p.v[parent]) + 0.5 * p.inertia[parent] * norm2(p.w[parent]);
+  double ke_in = 0;
+  const Vec3 xp = p.x[parent], vp = p.v[parent];
+  const std::uint16_t material = p.material[parent];
+  const std::uint32_t generation = static_cast<std::uint32_t>(p.field(f_generation_)[parent]) + 1;
+  // Fields of the parent (composition and the like are inherited).
+  std::vector<double> parent_fields;
+  for (std::size_t k = 0; k < p.field_names().size(); ++k)
+    parent_fields.push_back(p.field(k)[parent]);
+  p.flags[parent] |= pflag::remove;
+  for (std::size_t k = 0; k < placed.size(); ++k) {
+    const Fragment& f = progeny.fragments[k];
+    ParticleInit init;
+    init.x = placed[k].x;
+    init.v = vel.v[k];
+    init.w = vel.w[k];
+    init.radius = placed[k].r;
+    init.material = material;
+    init.flags = f.fines ? pflag::unbreakable : 0;
+    const bool growing = placed[k].r < radii[k];
+    if (growing) init.flags |= pflag::growing;
+    p.add_with_mass(init, f.mass);
+    const std::size_t s = p.size() - 1;
+    p.inertia[s] = inertia[k];  // of the full-size sphere from the start
+    for (std::size_t q = 0; q < parent_fields.size(); ++q) p.field(q)[s] = parent_fields[q];
+    p.field(f_generation_)[s] = generation;
+    p.field(f_target_)[s] = growing ? radii[k] : 0.0;
+    p.field(f_in_event_)[s] = p.field(f_energy_)[s] = p.field(f_force_)[s] = 0;
+    p.field(f_baseline_)[s] = p.field(f_quiet_)[s] = 0;
+    p.field(f_init_)[s] = 0;
+    initialize_particle(sim, s);  // every fragment draws its own strength for its size
+    if (growing) ++pending_;
+    ke_in += 0.5 * f.mass * norm2(vel.v[k]) + 0.5 * inertia[k] * norm2(vel.w[k]);
+    if (f.fines)
+      ++rec.fines_particles;
+    else
+      ++rec.fragments;
+  }
+  // Elastic energy of the starting overlaps (siblings, neighbours, walls, each <= eps min r).
+  const std::size_t first = p.size() - placed.size();
+  double created = 0;
+  std::vector<WallContact> found;
+  for (std::size_t a = first; a < p.size(); ++a) {
+    for (std::size_t b = a + 1; b < p.size(); ++b)
+      created += overlap_energy(sim, p.radius[a] + p.radius[b] - norm(p.x[a] - p.x[b]), p.radius[a],
+                                p.mass[a], material, p.radius[b], p.mass[b], material);
+    for (std::uint32_t j : around)
+      if (!(p.flags[j] & pflag::remove))
+        created +=
+            overlap_energy(sim, p.radius[a] + p.radius[j] - norm(p.x[a] - p.x[j]), p.radius[a],
+                           p.mass[a], material, p.radius[j], p.mass[j], p.material[j]);
+    for (const auto& w : sim.walls) {
+      found.clear();
+      w->contacts(p.x[a], p.radius[a], 0.0, found);
+      for (const auto& c : found)
+        created +=
+            overlap_energy(sim, c.overlap, p.radius[a], p.mass[a], material, 0, 0, w->material);
+    }
+  }
+  add_energy(sim, created);
+  if (progeny.fines_mass > 0) {
+    fines_mass_[material] += progeny.fines_mass;
+    fines_momentum_ += progeny.fines_mass * vp;
+    const double pe = -progeny.fines_mass * dot(sim.gravity, xp);
+    removed_ += pe;
+    sim.ledger.removed += pe;
+  }
+  rec.fines_mass = progeny.fines_mass;
+  removed_ += ke_out - ke_in;
+  sim.ledger.removed += ke_out - ke_in;
+  ++breakages_;
+  log_.push_back(rec);
+}
+
+void BreakageModule::ledger_row(const Simulation& sim) {
+  LedgerRow r{};
+  r.time = sim.time;
+  r.removed_total = sim.ledger.removed;
+  r.breakage_removed = removed_;
+  r.created = created_;
+  r.particle_mass = sim.particles.total_mass();
+  for (double m : fines_mass_) r.fines_mass += m;
+  r.momentum = sim.particles.total_momentum();
+  r.fines_momentum = fines_momentum_;
+  r.events = events_;
+  r.breakages = breakages_;
+  r.pending = pending_;
+  r.particles = sim.particles.size();
+  ledger_.push_back(r);
+}
+
+void BreakageModule::write_outputs() const {
+  if (opt_.output_dir.empty()) return;
+  write_model_curves();
+  {
+    AtomicFile f(opt_.output_dir / "breakage_events.csv");
+    auto& o = f.stream();
+    o << "time_s,parent_id,material,generation,diameter_m,mass_kg,specific_energy_J_per_kg,peak_"
+         "force_N,"
+         "strength,strength_unit,damage_before,broken,fragments,fines_particles,fines_mass_kg,"
+         "t10_percent\n";
+    for (const auto& r : log_) {
+      const auto& m = materials_[r.material];
+      o << fmt::format(
+          "{:.9g},{},{},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{},{},{},{:.9g},{:.9g}\n",
+          r.time, r.parent_id, r.material, r.generation, r.diameter, r.mass, r.specific_energy,
+          r.peak_force, r.strength, m ? m->criterion->strength_unit() : "", r.damage_before,
+          r.broken, r.fragments, r.fines_particles, r.fines_mass, r.t10);
+    }
+    f.commit();
+  }
+  {
+    AtomicFile f(opt_.output_dir / "breakage_ledger.csv");
+    auto& o = f.stream();
+    o << "time_s,events,breakages,pending_fragments,particles,particle_mass_kg,fines_mass_kg,"
+         "removed_energy_total_J,removed_energy_breakage_J,created_elastic_energy_J,momentum_x_kg_"
+         "m_per_s,"
+         "momentum_y_kg_m_per_s,momentum_z_kg_m_per_s,fines_momentum_x_kg_m_per_s,"
+         "fines_momentum_y_kg_m_per_s,fines_momentum_z_kg_m_per_s\n";
+    for (const auto& r : ledger_)
+      o << fmt::format(
+          "{:.9g},{},{},{},{},{:.12g},{:.12g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},"
+          "{:.9g},{:.9g},{:.9g}\n",
+          r.time, r.events, r.breakages, r.pending, r.particles, r.particle_mass, r.fines_mass,
+          r.removed_total, r.breakage_removed, r.created, r.momentum.x, r.momentum.y, r.momentum.z,
+          r.fines_momentum.x, r.fines_momentum.y, r.fines_momentum.z);
+    f.commit();
+  }
+}
+
+void BreakageModule::write_model_curves() const {
+  // Model curves for the plots, per material at the mean diameter of its logged events of the
+  // first generation (all events when there are none):
+  // breakage probability of a fresh particle and t10 versus absorbed specific energy.
+  AtomicFile f(opt_.output_dir / "breakage_model.csv");
+  auto& o = f.stream();
+  o << "material,diameter_m,specific_energy_J_per_kg,probability,t10_percent\n";
+  for (std::size_t m = 0; m < materials_.size(); ++m) {
+    if (!materials_[m]) continue;
+    double d = 0, e_max = 0;
+    std::size_t n = 0;
+    bool first_generation = false;
+    for (const auto& r : log_) first_generation |= r.material == m && r.generation == 0;
+    for (const auto& r : log_)
+      if (r.material == m && (!first_generation || r.generation == 0)) {
+        d += r.diameter;
+        e_max = std::max(e_max, r.specific_energy);
+        ++n;
+      }
+    if (n == 0) continue;
+    d /= static_cast<double>(n);
+    const MaterialBreakage& mat = *materials_[m];
+    double e50b = mat.criterion->median_fracture_energy(d);
+    if (e50b <= 0) e50b = mat.reference_energy;
+    const bool energy_criterion = mat.criterion->strength_unit() == "J/kg";
+    for (int k = 0; k <= 200; ++k) {
+      const double e = 1.5 * e_max * k / 200.0;
+      const double prob = energy_criterion ? mat.criterion->probability(d, {e, 0.0}) : -1.0;
+      o << fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g}\n", m, d, e, prob, mat.progeny.t10(e, e50b));
+    }
+  }
+  f.commit();
+}
+
+void BreakageModule::save(Archive& a) const {
+  const auto s1 = strength_rng_.state(), s2 = placement_rng_.state();
+  a.put("breakage/strength_rng", std::vector<std::uint64_t>(s1.begin(), s1.end()));
+  a.put("breakage/placement_rng", std::vector<std::uint64_t>(s2.begin(), s2.end()));
+  a.put("breakage/log", log_);
+  a.put("breakage/fines_mass", fines_mass_);
+  a.put_value("breakage/fines_momentum", fines_momentum_);
+  a.put("breakage/counters", std::vector<std::uint64_t>{breakages_, events_});
+  a.put_value("breakage/removed", removed_);
+  a.put_value("breakage/created", created_);
+  a.put_value("breakage/next_output", next_output_);
+  a.put("breakage/ledger", ledger_);
+}
+
+void BreakageModule::load(const Archive& a) {
+  auto to_state = [](const std::vector<std::uint64_t>& v) {
+    Rng::State s{};
+    std::copy_n(v.begin(), 4, s.begin());
+    return s;
+  };
+  strength_rng_.set_state(to_state(a.get<std::uint64_t>("breakage/strength_rng")));
+  placement_rng_.set_state(to_state(a.get<std::uint64_t>("breakage/placement_rng")));
+  log_ = a.get<EventRecord>("breakage/log");
+  fines_mass_ = a.get<double>("breakage/fines_mass");
+  fines_momentum_ = a.get_value<Vec3>("breakage/fines_momentum");
+  const auto c = a.get<std::uint64_t>("breakage/counters");
+  breakages_ = c.at(0);
+  events_ = c.at(1);
+  removed_ = a.get_value<double>("breakage/removed");
+  created_ = a.get_value<double>("breakage/created");
+  next_output_ = a.get_value<double>("breakage/next_output");
+  ledger_ = a.get<LedgerRow>("breakage/ledger");
+  configured_ = false;  // pre_force() rebuilds what depends on the simulation
+}
+
+}  // namespace comminute::breakage

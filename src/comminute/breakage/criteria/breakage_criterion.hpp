@@ -1,0 +1,61 @@
+#pragma once
+// Breakage criteria: when does a stressed particle break? One interface, chosen per material by
+// name in the case file ([materials.X.breakage] criterion = "tavares" | "peak_force" |
+// "composition_peak_force" | "vogel_peukert"). A criterion keeps its per-particle state (fracture
+// energy, damage, random strength factor, accumulated energy) in named fields of the particle
+// store, so the state moves with the particles and is checkpointed with them.
+//
+// The breakage module builds one StressingEvent per particle (see docs/breakage.md for when an
+// event starts and ends), asks breaks() every step while the event lasts (breakage is decided
+// during loading) and calls survive() once when an event ends without breakage.
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include "comminute/breakage/criteria/parameter_source.hpp"
+#include "comminute/core/registry.hpp"
+#include "comminute/core/rng.hpp"
+#include "comminute/particles/material.hpp"
+#include "comminute/particles/particle_store.hpp"
+
+namespace comminute::breakage {
+
+// The loading a particle has received in the current stressing event.
+struct StressingEvent {
+  double specific_energy =
+      0;                  // J/kg, energy absorbed by the particle (its share e of the contact work)
+  double peak_force = 0;  // N, largest sum of elastic normal contact forces on the particle
+};
+
+class BreakageCriterion {
+ public:
+  virtual ~BreakageCriterion() = default;
+  virtual std::string name() const = 0;
+  // Registers the per-particle fields this criterion keeps (idempotent).
+  virtual void attach(ParticleStore& p) = 0;
+  // Gives particle i (diameter d, m) its own strength: called once for every particle, fragments
+  // included, so every generation draws afresh for its own size.
+  virtual void initialize(ParticleStore& p, std::size_t i, double d, Rng& rng) const = 0;
+  // True when the event so far breaks particle i (diameter d).
+  virtual bool breaks(const ParticleStore& p, std::size_t i, double d,
+                      const StressingEvent& e) const = 0;
+  // The event ended without breakage: damage / accumulation.
+  virtual void survive(ParticleStore& /*p*/, std::size_t /*i*/, double /*d*/,
+                       const StressingEvent& /*e*/) const {}
+  // Current strength for the event log: specific fracture energy (J/kg) for energy criteria,
+  // critical force (N) for force criteria; see strength_unit().
+  virtual double strength(const ParticleStore& p, std::size_t i, double d) const = 0;
+  virtual std::string strength_unit() const = 0;
+  // Accumulated damage D in [0, 1) (0 for criteria without damage).
+  virtual double damage(const ParticleStore&, std::size_t) const { return 0.0; }
+  // Model probability that a fresh particle of diameter d breaks in one event with absorbed
+  // specific energy `energy` (J/kg) or peak force `force` (N); the plotted model curve.
+  virtual double probability(double d, const StressingEvent& e) const = 0;
+  // Median specific fracture energy of size d (J/kg) used by the t10 model (E50b), or a negative
+  // number when the criterion has none (the progeny table then needs reference_energy).
+  virtual double median_fracture_energy(double /*d*/) const { return -1.0; }
+};
+
+using CriterionRegistry = Registry<BreakageCriterion, const ParameterSource&, const Material&>;
+
+}  // namespace comminute::breakage

@@ -1,0 +1,59 @@
+#pragma once
+// Placing fragments inside the parent sphere (MODELS.md "Fragment placement"; seed 000's
+// shrink-then-grow). Fragments carry their final mass from the start (so momentum is exact and no
+// mass is ever missing); their radius starts shrunk so that overlaps with siblings, neighbours and
+// walls are at most eps min(r_i, r_j), and grows afterwards (FragmentGrowth, in the module).
+#include <functional>
+#include <vector>
+
+#include "comminute/core/rng.hpp"
+#include "comminute/core/vec3.hpp"
+
+namespace comminute::breakage {
+
+struct Sphere {
+  Vec3 x;        // m
+  double r = 0;  // m
+};
+
+struct PlacementOptions {
+  double overlap_ratio = 0.05;    // eps: largest overlap as a fraction of the smaller radius
+  int attempts = 30;              // candidate centres tried per fragment (least overlap kept)
+  double min_start_ratio = 0.05;  // a fragment starts at least this fraction of its radius
+};
+
+// Deepest overlap (m) of sphere (x, r) with the walls (<= 0 when clear); may be empty (no walls).
+using WallOverlap = std::function<double(const Vec3& x, double r)>;
+
+// Places fragments of final radii `radii` and masses `masses` (largest first) inside the parent
+// sphere `parent`. Centres are drawn uniformly in the ball of radius R - r_i, the candidate with
+// the least relative overlap with already placed siblings and with `neighbours` is kept; the set
+// is then translated so that its mass centre is exactly the parent centre (angular momentum about
+// any point stays exact). Returns centres and starting radii.
+std::vector<Sphere> place_fragments(const Sphere& parent, const std::vector<double>& radii,
+                                    const std::vector<double>& masses,
+                                    const std::vector<Sphere>& neighbours, const WallOverlap& walls,
+                                    const PlacementOptions& opt, Rng& rng);
+
+// Largest radius (<= r_want) of a sphere at `x` whose overlap with sphere `other` is at most
+// eps min(radius, other.r).
+double radius_allowed(const Vec3& x, double r_want, const Sphere& other, double eps);
+
+struct FragmentVelocities {
+  std::vector<Vec3> v, w;  // m/s, rad/s
+};
+
+// Velocities of fragments (centres x_i relative to the parent's centre, masses m_i, moments of
+// inertia I_i about their own centres) replacing a parent with velocity v_p, spin w_p and moment
+// of inertia I_p: rigid-body motion v_i = v_p + w x (x_i - x_p), w_i = w, where w solves
+// (J_orbit + sum I_i) w = I_p w_p so that angular momentum is conserved exactly; plus an optional
+// radial release dv_i = c (n_i - <n>) (n_i unit direction from the parent centre, <n> its mass
+// mean) with sum m_i dv_i = 0 and sum m_i |dv_i|^2 / 2 = released (J) — or less when one
+// off-centre fragment dominates the family (see the .cpp: speeds stay below 2 sqrt(8 released/M)).
+// Linear momentum sum m_i v_i = m_p v_p holds to rounding (the residual is removed).
+FragmentVelocities fragment_velocities(const Vec3& x_p, const Vec3& v_p, const Vec3& w_p,
+                                       double inertia_p, const std::vector<Vec3>& x,
+                                       const std::vector<double>& m,
+                                       const std::vector<double>& inertia, double released);
+
+}  // namespace comminute::breakage

@@ -1,0 +1,225 @@
+// Breakage criteria: fracture-energy distribution, size effect, energy partition, damage, and the
+// model-level tests 1 (breakage probability) and 4 (damage accumulation) of issue 3.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "breakage_test_params.hpp"
+#include "comminute/breakage/criteria/damage.hpp"
+#include "comminute/breakage/criteria/fracture_energy.hpp"
+#include "comminute/breakage/criteria/peak_force.hpp"
+#include "comminute/breakage/criteria/tavares.hpp"
+#include "comminute/breakage/criteria/vogel_peukert.hpp"
+
+using namespace comminute;
+using namespace comminute::breakage;
+
+namespace {
+const double inf = std::numeric_limits<double>::infinity();
+
+ParticleStore identical_particles(std::size_t n, BreakageCriterion& c, double d, Rng& rng) {
+  ParticleStore p;
+  c.attach(p);
+  for (std::size_t i = 0; i < n; ++i) {
+    p.add({{}, {}, {}, d / 2, 2700.0, 0, 0});
+    c.initialize(p, i, d, rng);
+  }
+  return p;
+}
+}  // namespace
+
+TEST(FractureEnergy, CdfMatchesOracleTable) {
+  // MODELS-breakage-notes.md §1.2 oracle [C], sigma = 0.8, E in units of E50 (printed to 6 digits).
+  const double e[] = {0.10, 0.25, 0.50, 1.00, 2.00, 4.00};
+  const double p5[] = {0.002166, 0.047583, 0.231251, 0.609851, 0.933834, 0.999910};
+  const double p10[] = {0.002081, 0.044451, 0.211185, 0.552389, 0.873971, 0.991140};
+  const double pinf[] = {0.002000, 0.041560, 0.193126, 0.500000, 0.806874, 0.958440};
+  FractureEnergyDistribution d5(1.0, 0.8, 5.0), d10(1.0, 0.8, 10.0), dinf(1.0, 0.8, inf);
+  for (int k = 0; k < 6; ++k) {
+    EXPECT_NEAR(d5.cdf(e[k]), p5[k], 1e-6);
+    EXPECT_NEAR(d10.cdf(e[k]), p10[k], 1e-6);
+    EXPECT_NEAR(dinf.cdf(e[k]), pinf[k], 1e-6);
+  }
+}
+
+TEST(FractureEnergy, QuantileInvertsCdfAndMedianIsReported) {
+  FractureEnergyDistribution d(200.0, 0.7, 5.0);
+  for (double u : {1e-6, 0.01, 0.3, 0.5, 0.77, 0.999999})
+    EXPECT_NEAR(d.cdf(d.quantile(u)), u, 1e-12);
+  // The seed's form: the median is E50 Emax/(Emax + E50) = 200*1000/1200 (MODELS.md).
+  EXPECT_NEAR(d.median(), 200.0 * 1000.0 / 1200.0, 1e-9);
+  EXPECT_LT(d.quantile(0.999999), d.emax());
+}
+
+TEST(FractureEnergy, SizeEffectOracle) {
+  // Notes §1.3 [C]: E_inf = 100 J/kg, d0 = 10 mm, phi = 1.
+  SizeEffect s{100.0, 0.010, 1.0, 1.0};
+  const double d[] = {1, 2, 5, 10, 20, 50, 100};
+  const double e50[] = {1100, 600, 300, 200, 150, 120, 110};
+  for (int k = 0; k < 7; ++k) EXPECT_NEAR(s.e50(d[k] * 1e-3), e50[k], 1e-9);
+}
+
+TEST(FractureEnergy, EnergyShareOracle) {
+  // Notes §1.4 [C] table.
+  const double ks = plane_strain_modulus(210e9, 0.30);
+  EXPECT_NEAR(energy_share(plane_strain_modulus(70e9, 0.25), ks), 0.755541, 1e-6);
+  EXPECT_NEAR(energy_share(plane_strain_modulus(30e9, 0.25), ks), 0.878220, 1e-6);
+  EXPECT_DOUBLE_EQ(energy_share(plane_strain_modulus(70e9, 0.25), plane_strain_modulus(70e9, 0.25)),
+                   0.5);
+}
+
+TEST(Damage, CheckValuesFromModels) {
+  // MODELS.md "Damage accumulation" check values (6 digits).
+  EXPECT_NEAR(tavares_king_damage(2, 0.5), 0.358610, 1e-6);
+  EXPECT_NEAR(tavares_king_damage(3, 0.3), 0.122009, 1e-6);
+  EXPECT_NEAR(tavares_king_damage(5, 0.9), 0.531877, 1e-6);
+  EXPECT_NEAR(tavares_king_damage(7, 0.99), 0.805857, 1e-6);
+  EXPECT_EQ(tavares_king_damage(4, 0.0), 0.0);
+  EXPECT_THROW(tavares_king_damage(4, 1.0), Error);
+}
+
+TEST(Damage, RootSatisfiesTheEquation) {
+  for (double g : {1.0, 2.5, 6.0})
+    for (double r : {0.05, 0.5, 0.95}) {
+      const double d = tavares_king_damage(g, r);
+      EXPECT_NEAR(d, std::pow(2 * g / (2 * g - 5 * d + 5) * r, 2 * g / 5), 1e-12);
+    }
+}
+
+// Issue 3, test 1: 1000 identical particles, each loaded once at E: the broken fraction lies in
+// the binomial 3-sigma band around the model P(E), at three energies.
+TEST(BreakageProbability, TavaresThousandParticlesWithinBinomialBand) {
+  TavaresParameters tp;
+  tp.size_effect = {100.0, 0.010, 1.0, 0.755541};
+  tp.sigma = 0.8;
+  tp.emax_ratio = 5.0;
+  Tavares c(tp);
+  const double d = 0.01;
+  const double e50 = c.median_fracture_energy(d);
+  Rng rng(2026, rng_stream::breakage);
+  for (double ratio : {0.5, 1.0, 2.0}) {
+    ParticleStore p = identical_particles(1000, c, d, rng);
+    const StressingEvent ev{ratio * e50, 0.0};
+    int broken = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) broken += c.breaks(p, i, d, ev) ? 1 : 0;
+    const double pm = c.probability(d, ev);
+    const double sd = std::sqrt(pm * (1 - pm) / 1000.0);
+    EXPECT_NEAR(broken / 1000.0, pm, 3 * sd) << "E/E50 = " << ratio;
+  }
+}
+
+TEST(BreakageProbability, VogelPeukertThousandParticlesWithinBinomialBand) {
+  VogelPeukert c({3.6, 0.06});
+  const double d = 0.002;
+  // Notes §5.3 oracle [C]: W = 50, 100, 200, 500 J/kg -> P = 0.1341, 0.3959, 0.7059, 0.9661.
+  EXPECT_NEAR(c.probability(d, {50, 0}), 0.1341, 1e-4);
+  EXPECT_NEAR(c.probability(d, {500, 0}), 0.9661, 1e-4);
+  EXPECT_EQ(c.probability(d, {29, 0}), 0.0);
+  Rng rng(7, rng_stream::breakage);
+  for (double w : {50.0, 100.0, 200.0}) {
+    ParticleStore p = identical_particles(1000, c, d, rng);
+    int broken = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) broken += c.breaks(p, i, d, {w, 0}) ? 1 : 0;
+    const double pm = c.probability(d, {w, 0});
+    EXPECT_NEAR(broken / 1000.0, pm, 3 * std::sqrt(pm * (1 - pm) / 1000.0)) << "W = " << w;
+  }
+}
+
+TEST(BreakageProbability, PeakForceRandomFactorWithinBinomialBand) {
+  PeakForce c({2e7, 1.6, 0.0}, 0.4);
+  const double d = 0.01;
+  Rng rng(11, rng_stream::breakage);
+  const double f50 = 2e7 * std::pow(d, 1.6);
+  for (double ratio : {0.7, 1.0, 1.5}) {
+    ParticleStore p = identical_particles(1000, c, d, rng);
+    int broken = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      broken += c.breaks(p, i, d, {0, ratio * f50}) ? 1 : 0;
+    const double pm = c.probability(d, {0, ratio * f50});
+    EXPECT_NEAR(broken / 1000.0, pm, 3 * std::sqrt(pm * (1 - pm) / 1000.0)) << "F/F50 = " << ratio;
+  }
+}
+
+TEST(PeakForce, CompositionWeightsTheCriticalForce) {
+  // Binary case (seed 000 eq. 3): F = F_CS (1 - C_t) + F_CS C_t f_rel,t with f_rel = (1, 4).
+  CompositionPeakForce c({1e6, 1.5, 2.0}, 0.0, {1.0, 4.0});
+  ParticleStore p;
+  c.attach(p);
+  p.add({{}, {}, {}, 0.005, 2700.0, 0, 0});
+  Rng rng(1);
+  c.initialize(p, 0, 0.01, rng);
+  const double fcs = 1e6 * std::pow(0.01, 1.5) + 2.0;
+  EXPECT_DOUBLE_EQ(c.strength(p, 0, 0.01), fcs);
+  p.field(p.field_index("composition.0"))[0] = 0.767;
+  p.field(p.field_index("composition.1"))[0] = 0.233;
+  EXPECT_NEAR(c.strength(p, 0, 0.01), fcs * (1 - 0.233) + fcs * 0.233 * 4.0, 1e-12 * fcs);
+  EXPECT_FALSE(c.breaks(p, 0, 0.01, {0, 1.69 * fcs}));
+  EXPECT_TRUE(c.breaks(p, 0, 0.01, {0, 1.70 * fcs}));
+}
+
+// Issue 3, test 4: repeated sub-critical impacts weaken a particle exactly as iterating the
+// damage equation by hand predicts, and it breaks on the impact the iteration says it should.
+TEST(DamageAccumulation, RepeatedImpactsFollowHandIteration) {
+  TavaresParameters tp;
+  tp.size_effect = {100.0, 0.0, 1.0, 1.0};
+  tp.sigma = 0.5;
+  tp.gamma = 3.0;
+  Tavares c(tp);
+  ParticleStore p;
+  c.attach(p);
+  p.add({{}, {}, {}, 0.005, 2700.0, 0, 0});
+  const std::size_t fe = p.field_index("tavares.fracture_energy");
+  p.field(fe)[0] = 100.0;      // J/kg, set by hand
+  const double impact = 40.0;  // J/kg each impact (r = 0.4 at first)
+  // Hand iteration, written independently of the library: plain fixed point of
+  // D = [2g/(2g - 5D + 5) r]^(2g/5), E <- E(1 - D), until e E_k >= E.
+  double e = 100.0;
+  int predicted = 0;
+  for (int k = 1; k < 100; ++k) {
+    if (impact >= e) {
+      predicted = k;
+      break;
+    }
+    double dmg = 0;
+    for (int it = 0; it < 200000; ++it)
+      dmg = std::pow(6.0 / (6.0 - 5.0 * dmg + 5.0) * impact / e, 1.2);
+    e *= 1 - dmg;
+  }
+  ASSERT_GT(predicted, 2);  // several sub-critical impacts before breakage for this choice
+  double hand = 100.0;
+  for (int k = 1; k <= predicted; ++k) {
+    const StressingEvent ev{impact, 0.0};
+    if (k < predicted) {
+      ASSERT_FALSE(c.breaks(p, 0, 0.01, ev)) << "impact " << k;
+      c.survive(p, 0, 0.01, ev);
+      double dmg = 0;
+      for (int it = 0; it < 200000; ++it)
+        dmg = std::pow(6.0 / (6.0 - 5.0 * dmg + 5.0) * impact / hand, 1.2);
+      hand *= 1 - dmg;
+      EXPECT_NEAR(p.field(fe)[0], hand, 1e-10 * hand) << "impact " << k;
+      EXPECT_NEAR(c.damage(p, 0), 1 - hand / 100.0, 1e-12);
+    } else {
+      EXPECT_TRUE(c.breaks(p, 0, 0.01, ev)) << "predicted breakage at impact " << k;
+    }
+  }
+}
+
+TEST(Criteria, RegistryBuildsEachByName) {
+  test_support::MapParameters s;
+  s.values = {{"e_inf", 100}, {"sigma", 0.8}, {"a", 1e6}, {"b", 1.5}, {"f_mat", 1.0}};
+  s.lists = {{"relative_strength", {1.0, 2.0}}};
+  Material m{"rock", 2700, 70e9, 0.25};
+  for (const char* n : {"tavares", "peak_force", "composition_peak_force", "vogel_peukert"}) {
+    auto c = CriterionRegistry::create(n, s, m);
+    ASSERT_TRUE(c) << n;
+    EXPECT_EQ(c->name(), n);
+  }
+  EXPECT_FALSE(CriterionRegistry::create("nope", s, m));
+  test_support::MapParameters bad;
+  bad.values = {{"e_inf", -1}, {"sigma", 0.8}};
+  EXPECT_THROW(CriterionRegistry::create("tavares", bad, m), Error);
+  // Applied basis against steel: E50 carries the partition e = 0.755541 (70 GPa ore, notes §1.4).
+  auto t = CriterionRegistry::create("tavares", s, m);
+  EXPECT_NEAR(t->median_fracture_energy(1e9), 100 * 0.755541, 1e-4);
+}

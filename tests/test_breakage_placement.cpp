@@ -1,0 +1,114 @@
+// Fragment placement and velocities: shrunk start within the overlap bound, mass centre on the
+// parent centre, exact linear and angular momentum, released energy exactly as configured.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "comminute/breakage/placement/fragment_placement.hpp"
+#include "comminute/core/units.hpp"
+
+using namespace comminute;
+using namespace comminute::breakage;
+
+namespace {
+struct Family {
+  std::vector<double> r, m, inertia;
+};
+Family family(Rng& rng, double rho) {
+  Family f;
+  for (int k = 0; k < 25; ++k) {
+    const double r = 0.001 * (0.2 + 0.6 * rng.uniform());
+    f.r.push_back(r);
+    f.m.push_back(rho * units::sphere_volume(r));
+    f.inertia.push_back(0.4 * f.m.back() * r * r);
+  }
+  std::sort(f.r.rbegin(), f.r.rend());
+  return f;
+}
+}  // namespace
+
+TEST(Placement, StartsInsideParentWithBoundedOverlaps) {
+  Rng rng(3, rng_stream::placement);
+  const Sphere parent{{0.1, 0.2, 0.3}, 0.002};
+  const Family f = family(rng, 2700);
+  const std::vector<Sphere> neighbours{{{0.1, 0.2, 0.3 + 0.0039}, 0.002}};  // overlaps the parent
+  PlacementOptions opt;
+  auto s = place_fragments(parent, f.r, f.m, neighbours, {}, opt, rng);
+  ASSERT_EQ(s.size(), f.r.size());
+  Vec3 cm;
+  double mt = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    cm += f.m[i] * s[i].x;
+    mt += f.m[i];
+    EXPECT_LE(s[i].r, f.r[i]);
+    EXPECT_GE(s[i].r, opt.min_start_ratio * f.r[i]);
+    for (std::size_t j = i + 1; j < s.size(); ++j) {
+      const double ov = s[i].r + s[j].r - norm(s[i].x - s[j].x);
+      EXPECT_LE(ov, opt.overlap_ratio * std::min(s[i].r, s[j].r) * (1 + 1e-9) + 1e-18);
+    }
+    if (s[i].r > opt.min_start_ratio * f.r[i]) {  // not floored: neighbour bound holds
+      const double ov = s[i].r + neighbours[0].r - norm(s[i].x - neighbours[0].x);
+      EXPECT_LE(ov, opt.overlap_ratio * s[i].r * (1 + 1e-9));
+    }
+    // centres inside the parent (up to the small mass-centre shift)
+    EXPECT_LT(norm(s[i].x - parent.x), parent.r);
+  }
+  EXPECT_NEAR(norm(cm / mt - parent.x), 0.0, 1e-15);
+}
+
+TEST(Placement, WallBoundShrinksFragments) {
+  Rng rng(4, rng_stream::placement);
+  const Sphere parent{{0, 0, 0.0019}, 0.002};  // parent overlaps the plane z = 0 by 0.1 mm
+  const Family f = family(rng, 2700);
+  WallOverlap plane = [](const Vec3& x, double r) { return r - x.z; };
+  PlacementOptions opt;
+  auto s = place_fragments(parent, f.r, f.m, {}, plane, opt, rng);
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s[i].r > opt.min_start_ratio * f.r[i]) {
+      EXPECT_LE(s[i].r - s[i].x.z, opt.overlap_ratio * s[i].r * (1 + 1e-9));
+    }
+  }
+}
+
+TEST(Placement, VelocitiesConserveMomentaAndAddReleasedEnergy) {
+  Rng rng(5, rng_stream::placement);
+  const double rho = 2700;
+  const Sphere parent{{0.01, -0.02, 0.05}, 0.002};
+  const Family f = family(rng, rho);
+  auto s = place_fragments(parent, f.r, f.m, {}, {}, PlacementOptions{}, rng);
+  std::vector<Vec3> x;
+  for (const auto& q : s) x.push_back(q.x);
+  double mp = 0;
+  for (double m : f.m) mp += m;  // the fragments carry the parent's mass
+  const double ip = 0.4 * mp * parent.r * parent.r;
+  const Vec3 vp{0.3, -1.2, 0.7}, wp{40, -25, 90};
+  for (double released : {0.0, 1e-4}) {
+    auto fv = fragment_velocities(parent.x, vp, wp, ip, x, f.m, f.inertia, released);
+    Vec3 p, l;
+    double ke = 0, ke_rigid = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      p += f.m[i] * fv.v[i];
+      l += f.m[i] * cross(x[i], fv.v[i]) + f.inertia[i] * fv.w[i];
+      ke += 0.5 * f.m[i] * norm2(fv.v[i]) + 0.5 * f.inertia[i] * norm2(fv.w[i]);
+    }
+    const Vec3 lp = mp * cross(parent.x, vp) + ip * wp;
+    // Linear momentum: exact up to rounding of a sum of 25 terms (1e-15 relative).
+    EXPECT_NEAR(norm(p - mp * vp), 0.0, 1e-15 * mp * norm(vp));
+    // Angular momentum about the origin: a 3x3 solve, 1e-12 relative.
+    EXPECT_NEAR(norm(l - lp), 0.0, 1e-12 * norm(lp));
+    if (released == 0) {
+      ke_rigid = ke;
+    } else {
+      auto rigid = fragment_velocities(parent.x, vp, wp, ip, x, f.m, f.inertia, 0.0);
+      for (std::size_t i = 0; i < x.size(); ++i)
+        ke_rigid += 0.5 * f.m[i] * norm2(rigid.v[i]) + 0.5 * f.inertia[i] * norm2(rigid.w[i]);
+      // The radial release is orthogonal to the rigid motion: KE rises by exactly `released`.
+      EXPECT_NEAR(ke - ke_rigid, released, 1e-12 * ke);
+    }
+  }
+  // Without spin the fragments' kinetic energy equals the parent's exactly (no release).
+  auto fv = fragment_velocities(parent.x, vp, {}, ip, x, f.m, f.inertia, 0.0);
+  double ke = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) ke += 0.5 * f.m[i] * norm2(fv.v[i]);
+  EXPECT_NEAR(ke, 0.5 * mp * norm2(vp), 1e-14 * ke);
+}

@@ -166,6 +166,11 @@ void Simulation::build_wall_candidates() {
       }
     }
   }
+  // by particle (then wall, feature): lets the force loop split the list between threads
+  std::stable_sort(wall_candidates_.begin(), wall_candidates_.end(),
+                   [](const WallContactRecord& a, const WallContactRecord& b) {
+                     return a.particle < b.particle;
+                   });
 }
 
 void Simulation::compute_forces() {
@@ -198,7 +203,39 @@ void Simulation::compute_forces() {
 namespace {
 struct ThreadTally {
   double damping = 0, friction = 0, elastic = 0, wall_work = 0;
+  void add(const ContactForces& out) {
+    damping += out.damping_dissipation;
+    friction += out.friction_dissipation;
+    elastic += out.stored_energy;
+  }
 };
+
+// What every contact records in its history after its forces are computed (breakage reads it).
+inline void record_loading(ContactHistory& h, double overlap, const ContactForces& out) {
+  if (overlap > h.max_overlap) {
+    h.max_overlap = overlap;
+    h.loading_work = out.normal_elastic_energy;
+  }
+  h.peak_normal_force = std::max(h.peak_normal_force, out.elastic_normal_force);
+  h.normal_force = out.elastic_normal_force;
+}
+
+// Splits [0, n) into nt ranges of about equal total weight; weight(k) is the cost of item k.
+template <class Weight>
+std::vector<std::size_t> balanced_split(std::size_t n, int nt, Weight weight) {
+  std::vector<std::size_t> at(static_cast<std::size_t>(nt) + 1, n);
+  at[0] = 0;
+  if (nt == 1) return at;
+  double total = 0;
+  for (std::size_t k = 0; k < n; ++k) total += weight(k);
+  double sum = 0;
+  int t = 1;
+  for (std::size_t k = 0; k < n && t < nt; ++k) {
+    sum += weight(k);
+    while (t < nt && sum >= total * t / nt) at[static_cast<std::size_t>(t++)] = k + 1;
+  }
+  return at;
+}
 }  // namespace
 
 void Simulation::particle_particle_forces() {
@@ -212,9 +249,13 @@ void Simulation::particle_particle_forces() {
   const std::size_t npairs = nlist_.size();
   const int nt = npairs >= 2 * kParallelMin ? max_threads() : 1;
   const auto& rows = nlist_.rows();
+  // balance by cost: a touching pair (contact law) costs several times a distance check
+  const auto& touching = nlist_.touching;
+  const auto split = balanced_split(npairs, nt, [&](std::size_t k) { return 1.0 + 6.0 * touching[k]; });
   std::vector<std::uint32_t> owner_begin(static_cast<std::size_t>(nt) + 1, 0);
   owner_begin[static_cast<std::size_t>(nt)] = static_cast<std::uint32_t>(n);
-  for (int t = 1; t < nt; ++t) owner_begin[t] = npairs == 0 ? 0 : nlist_.first[npairs * t / nt];
+  for (int t = 1; t < nt; ++t)
+    owner_begin[t] = split[t] < npairs ? nlist_.first[split[t]] : static_cast<std::uint32_t>(n);
   cross_.resize(static_cast<std::size_t>(nt));
   std::vector<ThreadTally> tally(static_cast<std::size_t>(nt));
   const ContactLaw& contact_law = *law;
@@ -226,7 +267,7 @@ void Simulation::particle_particle_forces() {
     const std::uint32_t own0 = owner_begin[t], own1 = owner_begin[t + 1];
     auto& queued = cross_[t];
     queued.clear();
-    ThreadTally& tl = tally[t];
+    ThreadTally tl;  // local: threads' tallies side by side in memory would share a cache line
     const std::size_t k0 = rows[own0], k1 = rows[own1];
     ContactKinematics ck;
     ck.dt = dt;
@@ -263,15 +304,8 @@ void Simulation::particle_particle_forces() {
       contact_law.compute(ck, pp, h, out);
       if (cohesion) cohesion->compute(ck, pp, out);
       if (rolling) rolling->compute(ck, pp, h, out);
-      if (overlap > h.max_overlap) {
-        h.max_overlap = overlap;
-        h.loading_work = out.normal_elastic_energy;
-      }
-      h.peak_normal_force = std::max(h.peak_normal_force, out.elastic_normal_force);
-      h.normal_force = out.elastic_normal_force;
-      tl.damping += out.damping_dissipation;
-      tl.friction += out.friction_dissipation;
-      tl.elastic += out.stored_energy;
+      record_loading(h, overlap, out);
+      tl.add(out);
       const Vec3 fc = out.normal_force * nrm + out.tangential_force;
       F[i] += fc;
       T[i] += out.rolling_torque - ri * cross(nrm, out.tangential_force);
@@ -283,6 +317,7 @@ void Simulation::particle_particle_forces() {
         queued.push_back({j, -fc, tj});
       }
     }
+    tally[t] = tl;
   }
   for (const auto& list : cross_)
     for (const auto& c : list) {
@@ -297,66 +332,90 @@ void Simulation::particle_particle_forces() {
 }
 
 void Simulation::particle_wall_forces() {
+  // Candidates are sorted by particle, so splitting them at particle boundaries gives each thread
+  // its own particles; wall forces and tallies are summed per thread and combined in order.
   auto& p = particles;
-  wall_contacts_.clear();
-  std::vector<WallContact> found;
+  const std::size_t nc = wall_candidates_.size();
+  const int nt = nc >= kParallelMin / 2 ? max_threads() : 1;
+  std::vector<std::size_t> begin(static_cast<std::size_t>(nt) + 1, nc);
+  begin[0] = 0;
+  for (int t = 1; t < nt; ++t) {
+    std::size_t b = std::max(begin[t - 1], nc * t / nt);
+    while (b > 0 && b < nc && wall_candidates_[b].particle == wall_candidates_[b - 1].particle) ++b;
+    begin[t] = b;
+  }
+  struct WallTally {
+    ThreadTally energy;
+    std::vector<Vec3> force, torque;
+    std::vector<WallContactRecord> touching;
+  };
+  std::vector<WallTally> part(static_cast<std::size_t>(nt));
   const ContactLaw& contact_law = *law;
-  // Wall contacts are few compared with pairs: a serial loop keeps wall forces deterministic.
-  for (auto& c : wall_candidates_) {
-    const std::uint32_t i = c.particle;
-    Wall& w = *walls[c.wall];
-    found.clear();
-    w.contacts(p.x[i], p.radius[i], 0.0, found);
-    const WallContact* hit = nullptr;
-    for (const auto& f : found)
-      if (f.feature == c.feature || c.feature < 0) hit = &f;
-    if (hit == nullptr || hit->overlap <= 0) {
-      c.history = ContactHistory{};
-      continue;
+#pragma omp parallel num_threads(nt)
+  {
+    const int t = thread_id();
+    WallTally& mine = part[t];
+    mine.force.assign(walls.size(), Vec3{});
+    mine.torque.assign(walls.size(), Vec3{});
+    std::vector<WallContact> found;
+    for (std::size_t q = begin[t]; q < begin[t + 1]; ++q) {
+      WallContactRecord& c = wall_candidates_[q];
+      const std::uint32_t i = c.particle;
+      const Wall& w = *walls[c.wall];
+      found.clear();
+      w.contacts(p.x[i], p.radius[i], 0.0, found);
+      const WallContact* hit = nullptr;  // a full-scan wall's candidate (feature < 0) takes any
+      for (const auto& f : found)
+        if (f.feature == c.feature || c.feature < 0) hit = &f;
+      if (hit == nullptr || hit->overlap <= 0) {
+        c.history = ContactHistory{};
+        continue;
+      }
+      const Vec3 nrm = hit->normal;
+      const double overlap = hit->overlap;
+      const double ri = p.radius[i] - overlap;
+      const Vec3 vwall = w.kinematics.velocity_at(hit->point);
+      const Vec3 vrel = p.v[i] - cross(p.w[i], ri * nrm) - vwall;
+      const double vn = dot(vrel, nrm);
+      ContactKinematics ck;
+      ck.dt = dt;
+      ck.normal = nrm;
+      ck.overlap = overlap;
+      ck.overlap_rate = -vn;
+      ck.tangential_velocity = vrel - vn * nrm;
+      ck.relative_angular_velocity = p.w[i];
+      ck.effective_radius = p.radius[i];
+      ck.effective_mass = p.mass[i];
+      ck.effective_inertia = p.inertia[i];
+      const PairParameters& pp = materials.pair(p.material[i], w.material);
+      ContactForces out;
+      contact_law.compute(ck, pp, c.history, out);
+      if (cohesion) cohesion->compute(ck, pp, out);
+      if (rolling) rolling->compute(ck, pp, c.history, out);
+      record_loading(c.history, overlap, out);
+      const Vec3 fc = out.normal_force * nrm + out.tangential_force;
+      p.f[i] += fc;
+      p.t[i] += out.rolling_torque - ri * cross(nrm, out.tangential_force);
+      mine.force[c.wall] -= fc;
+      mine.torque[c.wall] -= cross(hit->point - w.kinematics.center, fc);
+      mine.energy.add(out);
+      mine.energy.wall_work += dot(fc, vwall) * dt;  // power of the wall's force on the particle
+      WallContactRecord rec = c;
+      rec.feature = hit->feature;
+      mine.touching.push_back(rec);
     }
-    if (c.feature < 0 && wall_full_scan_[c.wall]) {
-      // full-scan wall: the candidate stands for whichever feature is touched now
+  }
+  wall_contacts_.clear();
+  for (const auto& mine : part) {
+    for (std::size_t k = 0; k < walls.size(); ++k) {
+      walls[k]->force += mine.force[k];
+      walls[k]->torque += mine.torque[k];
     }
-    const Vec3 nrm = hit->normal;
-    const double overlap = hit->overlap;
-    const double ri = p.radius[i] - overlap;
-    const Vec3 vwall = w.kinematics.velocity_at(hit->point);
-    const Vec3 vrel = p.v[i] - cross(p.w[i], ri * nrm) - vwall;
-    const double vn = dot(vrel, nrm);
-    ContactKinematics ck;
-    ck.dt = dt;
-    ck.normal = nrm;
-    ck.overlap = overlap;
-    ck.overlap_rate = -vn;
-    ck.tangential_velocity = vrel - vn * nrm;
-    ck.relative_angular_velocity = p.w[i];
-    ck.effective_radius = p.radius[i];
-    ck.effective_mass = p.mass[i];
-    ck.effective_inertia = p.inertia[i];
-    const PairParameters& pp = materials.pair(p.material[i], w.material);
-    ContactForces out;
-    contact_law.compute(ck, pp, c.history, out);
-    if (cohesion) cohesion->compute(ck, pp, out);
-    if (rolling) rolling->compute(ck, pp, c.history, out);
-    ContactHistory& h = c.history;
-    if (overlap > h.max_overlap) {
-      h.max_overlap = overlap;
-      h.loading_work = out.normal_elastic_energy;
-    }
-    h.peak_normal_force = std::max(h.peak_normal_force, out.elastic_normal_force);
-    h.normal_force = out.elastic_normal_force;
-    const Vec3 fc = out.normal_force * nrm + out.tangential_force;
-    p.f[i] += fc;
-    p.t[i] += out.rolling_torque - ri * cross(nrm, out.tangential_force);
-    w.force -= fc;
-    w.torque -= cross(hit->point - w.kinematics.center, fc);
-    ledger.damping += out.damping_dissipation;
-    ledger.friction += out.friction_dissipation;
-    ledger.wall_work += dot(-fc, -vwall) * dt;  // power of the wall's force on the particle
-    elastic_energy_ += out.stored_energy;
-    WallContactRecord rec = c;
-    rec.feature = hit->feature;
-    wall_contacts_.push_back(rec);
+    ledger.damping += mine.energy.damping;
+    ledger.friction += mine.energy.friction;
+    ledger.wall_work += mine.energy.wall_work;
+    elastic_energy_ += mine.energy.elastic;
+    wall_contacts_.insert(wall_contacts_.end(), mine.touching.begin(), mine.touching.end());
   }
 }
 

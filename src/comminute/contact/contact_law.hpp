@@ -15,13 +15,16 @@ namespace comminute {
 // particle reordering: it is keyed by the two particle ids). Modules read it (breakage uses the
 // loading work and peak force).
 struct ContactHistory {
-  Vec3 tangential_spring;   // m, accumulated tangential displacement (in the current tangent plane)
-  Vec3 rolling_spring;      // rad (x radius: m), elastic rolling displacement (EPSD model)
-  double max_overlap = 0;   // m, largest overlap in this contact
-  double loading_work = 0;  // J, elastic work of the normal force up to max_overlap
-  double peak_normal_force = 0;  // N, largest elastic normal force in this contact
-  double normal_force = 0;       // N, elastic normal force of the last step (0 when apart)
+  Vec3 tangential_spring;  // m, accumulated tangential displacement (in the current tangent plane)
+  Vec3 rolling_spring;     // N m, elastic rolling torque (EPSD model)
+  // Loading record for breakage models, in single precision (a dense bed holds several hundred
+  // thousand histories: 64 bytes each keeps a 100k-particle bed under 1 kB per particle).
+  float max_overlap = 0;   // m, largest overlap in this contact
+  float loading_work = 0;  // J, elastic work of the normal force up to max_overlap
+  float normal_force = 0;  // N, elastic normal force of the last step (0 when apart)
+  float unused = 0;        // explicit padding: checkpoints copy the bytes of this struct
 };
+static_assert(sizeof(ContactHistory) == 64);
 
 // Geometry and relative motion of one contact, computed by the engine.
 struct ContactKinematics {

@@ -213,11 +213,10 @@ struct ThreadTally {
 // What every contact records in its history after its forces are computed (breakage reads it).
 inline void record_loading(ContactHistory& h, double overlap, const ContactForces& out) {
   if (overlap > h.max_overlap) {
-    h.max_overlap = overlap;
-    h.loading_work = out.normal_elastic_energy;
+    h.max_overlap = static_cast<float>(overlap);
+    h.loading_work = static_cast<float>(out.normal_elastic_energy);
   }
-  h.peak_normal_force = std::max(h.peak_normal_force, out.elastic_normal_force);
-  h.normal_force = out.elastic_normal_force;
+  h.normal_force = static_cast<float>(out.elastic_normal_force);
 }
 
 // Splits [0, n) into nt ranges of about equal total weight; weight(k) is the cost of item k.

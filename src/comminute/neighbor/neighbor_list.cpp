@@ -33,13 +33,18 @@ void NeighborList::make_rows(std::size_t n) {
 }
 
 void NeighborList::build(const ParticleStore& p, double skin) {
-  // 1. keep the history of touching pairs, by ids
-  // (scratch arrays are members: reusing their capacity keeps the heap from growing with
-  // every rebuild)
+  // 1. keep the history of touching pairs: compacted to the front of `history` in place, with
+  //    their particle ids aside (no second copy of the histories: memory is the limit in dense
+  //    beds). Scratch arrays are members so that their capacity is reused between builds.
   auto& saved = saved_;
   saved.clear();
+  std::size_t kept = 0;
   for (std::size_t k = 0; k < first.size(); ++k)
-    if (touching[k]) saved.push_back({ids_[first[k]], ids_[second[k]], history[k]});
+    if (touching[k]) {
+      saved.push_back({ids_[first[k]], ids_[second[k]]});
+      history[kept++] = history[k];
+    }
+  history.resize(kept);
 
   const std::size_t n = p.size();
   ids_ = p.id;
@@ -124,19 +129,15 @@ void NeighborList::build(const ParticleStore& p, double skin) {
     }
   }
   const std::size_t total = first.size();
-  if (history.capacity() < total) {
-    // grow without holding old and new at once (the touching histories are in `saved`)
-    std::vector<ContactHistory>().swap(history);
-    history.reserve(total + total / 8);
-  }
-  history.assign(total, ContactHistory{});
   touching.assign(total, 0);
   make_rows(n);
+  transfer_history(p, total);
+}
 
-  // 4. move the history over
-  if (saved.empty()) return;
-  // slot of each id: a sorted (id, slot) table
-  auto& slot = slot_of_id_;
+void NeighborList::transfer_history(const ParticleStore& p, std::size_t total) {
+  // 4. move the saved histories (history[0..m), ids in saved_) to their new pair positions
+  const std::size_t n = p.size(), m = saved_.size();
+  auto& slot = slot_of_id_;  // slot of each id: a sorted (id, slot) table
   slot.resize(n);
   for (std::uint32_t i = 0; i < n; ++i) slot[i] = {p.id[i], i};
   std::sort(slot.begin(), slot.end());
@@ -146,23 +147,61 @@ void NeighborList::build(const ParticleStore& p, double skin) {
     out = it->second;
     return true;
   };
-  for (const auto& c : saved) {
+  constexpr std::uint32_t none = 0xFFFFFFFFu;
+  auto& pos = new_position_;
+  pos.assign(m, none);
+  for (std::size_t e = 0; e < m; ++e) {
     std::uint32_t a = 0, b = 0;
-    if (!find_slot(c.a, a) || !find_slot(c.b, b)) continue;  // a particle was removed
+    if (!find_slot(saved_[e].a, a) || !find_slot(saved_[e].b, b)) continue;  // removed particle
     // owner: the large one of a mixed pair, else the smaller slot
     const bool swap = large_[a] == large_[b] ? b < a : large_[b] != 0;
     if (swap) std::swap(a, b);
     for (std::uint32_t k = row_[a]; k < row_[a + 1]; ++k)
       if (second[k] == b) {
-        history[k] = c.h;
-        if (swap) {  // the history's normal orientation follows the owner: flip vectors
-          history[k].tangential_spring = -history[k].tangential_spring;
-          history[k].rolling_spring = -history[k].rolling_spring;
+        pos[e] = k;
+        if (swap) {  // the history's orientation follows the owner: flip its vectors
+          history[e].tangential_spring = -history[e].tangential_spring;
+          history[e].rolling_spring = -history[e].rolling_spring;
         }
-        touching[k] = 1;
         break;
       }
   }
+  // order the kept entries by new position (dropped ones last) with an in-place permutation
+  auto& order = order_;
+  order.resize(m);
+  for (std::uint32_t e = 0; e < m; ++e) order[e] = e;
+  std::sort(order.begin(), order.end(), [&pos](std::uint32_t x, std::uint32_t y) {
+    return pos[x] < pos[y];  // none (dropped) sorts last
+  });
+  std::vector<bool> done(m, false);
+  for (std::size_t r = 0; r < m; ++r) {  // history'[r] = history[order[r]], cycle by cycle
+    if (done[r]) continue;
+    const ContactHistory first_of_cycle = history[r];
+    std::size_t j = r;
+    while (true) {
+      done[j] = true;
+      const std::size_t from = order[j];
+      if (from == r) {
+        history[j] = first_of_cycle;
+        break;
+      }
+      history[j] = history[from];
+      j = from;
+    }
+  }
+  std::size_t valid = 0;
+  while (valid < m && pos[order[valid]] != none) ++valid;
+  if (history.capacity() < total) history.reserve(total + total / 16);
+  history.resize(total);
+  // scatter back to front: sorted distinct positions satisfy pos >= index, so nothing unread is
+  // overwritten; then clear every slot that holds no touching history
+  for (std::size_t r = valid; r-- > 0;) {
+    const std::uint32_t k = pos[order[r]];
+    history[k] = history[r];
+    touching[k] = 1;
+  }
+  for (std::size_t k = 0; k < total; ++k)
+    if (!touching[k]) history[k] = ContactHistory{};
 }
 
 std::vector<std::size_t> NeighborList::cell_order(const ParticleStore& p, double cell) {

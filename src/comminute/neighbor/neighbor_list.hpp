@@ -46,11 +46,12 @@ class NeighborList {
   std::vector<std::uint8_t> large_;  // 1 for particles in the large-particle grid
   std::vector<std::uint32_t> row_;   // CSR offsets of rows by owner slot (size n+1)
   // scratch reused between builds
-  struct SavedContact {
-    std::uint64_t a, b;  // ids of owner and other
-    ContactHistory h;
+  void transfer_history(const ParticleStore& p, std::size_t total);
+  struct SavedIds {
+    std::uint64_t a, b;  // ids of owner and other of a touching pair
   };
-  std::vector<SavedContact> saved_;
+  std::vector<SavedIds> saved_;
+  std::vector<std::uint32_t> new_position_, order_;
   std::vector<std::vector<std::uint32_t>> thread_first_, thread_second_;
   std::vector<std::pair<std::uint64_t, std::uint32_t>> slot_of_id_;
   void make_rows(std::size_t n);

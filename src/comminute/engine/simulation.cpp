@@ -250,7 +250,8 @@ void Simulation::particle_particle_forces() {
   const auto& rows = nlist_.rows();
   // balance by cost: a touching pair (contact law) costs several times a distance check
   const auto& touching = nlist_.touching;
-  const auto split = balanced_split(npairs, nt, [&](std::size_t k) { return 1.0 + 6.0 * touching[k]; });
+  const auto split =
+      balanced_split(npairs, nt, [&](std::size_t k) { return 1.0 + 6.0 * touching[k]; });
   std::vector<std::uint32_t> owner_begin(static_cast<std::size_t>(nt) + 1, 0);
   owner_begin[static_cast<std::size_t>(nt)] = static_cast<std::uint32_t>(n);
   for (int t = 1; t < nt; ++t)

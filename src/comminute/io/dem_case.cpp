@@ -222,9 +222,9 @@ DemCase build_dem_case(const CaseTable& root) {
   for (std::size_t k = 0; k < inserts.size(); ++k) {
     const SmallestParticle sp = read_insertion(inserts[k], k, sim);
     const Material& mat = sim.materials.material(sp.material);
-    t_rayleigh = std::min(t_rayleigh, units::pi * sp.radius *
-                                          std::sqrt(mat.density / mat.shear_modulus()) /
-                                          (0.1631 * mat.poisson_ratio + 0.8766));
+    t_rayleigh =
+        std::min(t_rayleigh, units::pi * sp.radius * std::sqrt(mat.density / mat.shear_modulus()) /
+                                 (0.1631 * mat.poisson_ratio + 0.8766));
     if (sp.radius < smallest.radius) smallest = sp;
   }
   const double fraction = s.number("time_step_fraction", Limits{0.0, 1.0, true, false}, 0.2);

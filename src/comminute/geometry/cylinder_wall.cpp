@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "comminute/core/units.hpp"
-#include "comminute/geometry/rigid_motion.hpp"
+#include "comminute/geometry/rigid_frame.hpp"
 
 namespace comminute {
 
@@ -70,10 +70,7 @@ int CylinderWall::contacts(const Vec3& x, double r, double margin,
 }
 
 void CylinderWall::advance(double dt) {
-  const Vec3 rot = kinematics.angular_velocity * dt;
-  center_ = kinematics.center + rotate(center_ - kinematics.center, rot) + kinematics.velocity * dt;
-  axis_ = rotate(axis_, rot);
-  kinematics.center += kinematics.velocity * dt;
+  move_rigidly(center_, axis_, kinematics, dt);
 }
 
 bool CylinderWall::surface_moves() const {
@@ -114,14 +111,11 @@ SurfaceMesh CylinderWall::surface(double) const {
 }
 
 void CylinderWall::save(Archive& a, const std::string& prefix) const {
-  a.put(prefix + "geometry", std::vector<Vec3>{center_, axis_, kinematics.center});
+  save_rigid_frame(a, prefix, center_, axis_, kinematics);
 }
 
 void CylinderWall::load(const Archive& a, const std::string& prefix) {
-  auto g = a.get<Vec3>(prefix + "geometry");
-  center_ = g.at(0);
-  axis_ = g.at(1);
-  kinematics.center = g.at(2);
+  load_rigid_frame(a, prefix, center_, axis_, kinematics);
 }
 
 }  // namespace comminute

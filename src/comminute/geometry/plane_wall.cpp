@@ -1,6 +1,6 @@
 #include "comminute/geometry/plane_wall.hpp"
 
-#include "comminute/geometry/rigid_motion.hpp"
+#include "comminute/geometry/rigid_frame.hpp"
 
 namespace comminute {
 
@@ -16,10 +16,7 @@ int PlaneWall::contacts(const Vec3& x, double r, double margin,
 }
 
 void PlaneWall::advance(double dt) {
-  const Vec3 rot = kinematics.angular_velocity * dt;
-  point_ = kinematics.center + rotate(point_ - kinematics.center, rot) + kinematics.velocity * dt;
-  normal_ = rotate(normal_, rot);
-  kinematics.center += kinematics.velocity * dt;
+  move_rigidly(point_, normal_, kinematics, dt);
 }
 
 bool PlaneWall::surface_moves() const {
@@ -38,14 +35,11 @@ SurfaceMesh PlaneWall::surface(double extent) const {
 }
 
 void PlaneWall::save(Archive& a, const std::string& prefix) const {
-  a.put(prefix + "geometry", std::vector<Vec3>{point_, normal_, kinematics.center});
+  save_rigid_frame(a, prefix, point_, normal_, kinematics);
 }
 
 void PlaneWall::load(const Archive& a, const std::string& prefix) {
-  auto g = a.get<Vec3>(prefix + "geometry");
-  point_ = g.at(0);
-  normal_ = g.at(1);
-  kinematics.center = g.at(2);
+  load_rigid_frame(a, prefix, point_, normal_, kinematics);
 }
 
 }  // namespace comminute

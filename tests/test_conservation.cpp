@@ -35,6 +35,18 @@ void scatter(Simulation& sim, int n, double r, double L, double speed, std::uint
   }
 }
 
+// 30 spheres of 3 mm radius flying at up to 0.5 m/s in a closed 5 cm box.
+std::unique_ptr<Simulation> closed_box_of_bouncing_spheres(const DemSetup& s, double dt) {
+  auto sim = make_simulation(s);
+  const double L = 0.05, r = 0.003;
+  sim->walls.push_back(
+      std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{L, L, L}, std::array<bool, 6>{}));
+  scatter(*sim, 30, r, L, 0.5, 11);
+  sim->dt = dt;
+  sim->setup();
+  return sim;
+}
+
 }  // namespace
 
 TEST(Conservation, EnergyWithoutDampingOrFriction) {
@@ -46,13 +58,7 @@ TEST(Conservation, EnergyWithoutDampingOrFriction) {
   s.restitution = 1.0;
   s.friction = 0.0;
   s.gravity = {0, 0, -9.81};
-  auto sim = make_simulation(s);
-  const double L = 0.05, r = 0.003;
-  sim->walls.push_back(
-      std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{L, L, L}, std::array<bool, 6>{}));
-  scatter(*sim, 30, r, L, 0.5, 11);
-  sim->dt = 2e-6;
-  sim->setup();
+  auto sim = closed_box_of_bouncing_spheres(s, 2e-6);
   const double e0 = total_energy(*sim);
   const double k0 = sim->observe().kinetic_translational;
   double worst = 0;
@@ -174,13 +180,7 @@ TEST_P(EnergyBalance, BalancesWithDampingAndFriction) {
   s.restitution = 0.5;
   s.friction = 0.5;
   s.gravity = {0, 0, -9.81};
-  auto sim = make_simulation(s);
-  const double L = 0.05, r = 0.003;
-  sim->walls.push_back(
-      std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{L, L, L}, std::array<bool, 6>{}));
-  scatter(*sim, 30, r, L, 0.5, 11);
-  sim->dt = 5e-7;
-  sim->setup();
+  auto sim = closed_box_of_bouncing_spheres(s, 5e-7);
   const double e0 = total_energy(*sim);
   sim->run(400000);
   const double dissipated = sim->ledger.damping + sim->ledger.friction;

@@ -257,22 +257,23 @@ void BreakageModule::update_events(Simulation& sim) {
       continue;
     }
     const BreakageCriterion& crit = *mat->criterion;
+    auto record = [&] {  // the event as it stands, for the log
+      EventRecord r;
+      r.time = sim.time;
+      r.parent_id = p.id[i];
+      r.material = p.material[i];
+      r.generation = static_cast<std::uint32_t>(p.field(f_generation_)[i]);
+      r.diameter = d;
+      r.mass = p.mass[i];
+      r.specific_energy = energy[i];
+      r.peak_force = force[i];
+      r.strength = crit.strength(p, i, d);
+      r.damage_before = crit.damage(p, i);
+      return r;
+    };
     auto end_event = [&](bool broke) {
       ++events_;
-      if (opt_.log_all_events && !broke) {
-        EventRecord r;
-        r.time = sim.time;
-        r.parent_id = p.id[i];
-        r.material = p.material[i];
-        r.generation = static_cast<std::uint32_t>(p.field(f_generation_)[i]);
-        r.diameter = d;
-        r.mass = p.mass[i];
-        r.specific_energy = energy[i];
-        r.peak_force = force[i];
-        r.strength = crit.strength(p, i, d);
-        r.damage_before = crit.damage(p, i);
-        log_.push_back(r);
-      }
+      if (opt_.log_all_events && !broke) log_.push_back(record());
       if (!broke) crit.survive(p, i, d, {energy[i], force[i]});
       in_event[i] = 0;
       energy[i] = force[i] = 0;
@@ -302,17 +303,7 @@ void BreakageModule::update_events(Simulation& sim) {
     force[i] = std::max(force[i], force_[i]);
     const StressingEvent ev{energy[i], force[i]};
     if (crit.breaks(p, i, d, ev)) {
-      EventRecord r;
-      r.time = sim.time;
-      r.parent_id = p.id[i];
-      r.material = p.material[i];
-      r.generation = static_cast<std::uint32_t>(p.field(f_generation_)[i]);
-      r.diameter = d;
-      r.mass = p.mass[i];
-      r.specific_energy = energy[i];
-      r.peak_force = force[i];
-      r.strength = crit.strength(p, i, d);
-      r.damage_before = crit.damage(p, i);
+      EventRecord r = record();
       r.broken = 1;
       broken_ids_.push_back(p.id[i]);
       broken_records_.push_back(r);

@@ -386,7 +386,8 @@ void BreakageModule::end_of_step(Simulation& sim) {
       replace(sim, i, around[i], broken_records_[b]);
     }
     p.compact();
-    sim.particles_changed();
+    sim.particles_replaced(fragment_parents_);
+    fragment_parents_.clear();
     broken_ids_.clear();
     broken_records_.clear();
   }
@@ -466,7 +467,7 @@ void BreakageModule::replace(Simulation& sim, std::size_t parent,
     init.flags = f.fines ? pflag::unbreakable : 0;
     const bool growing = placed[k].r < radii[k];
     if (growing) init.flags |= pflag::growing;
-    p.add_with_mass(init, f.mass);
+    fragment_parents_.emplace_back(p.add_with_mass(init, f.mass), p.id[parent]);
     const std::size_t s = p.size() - 1;
     p.inertia[s] = inertia[k];  // of the full-size sphere from the start
     for (std::size_t q = 0; q < parent_fields.size(); ++q) p.field(q)[s] = parent_fields[q];

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 #include "comminute/core/error.hpp"
 #include "comminute/core/parallel.hpp"
@@ -130,6 +131,7 @@ void Simulation::rebuild() {
   }
   nlist_.build(p, options.skin);
   x_at_build_ = p.x;
+  displacement_limit_ = 0.5 * options.skin;
   build_wall_candidates();
   need_rebuild_ = false;
   ++rebuilds_;
@@ -173,12 +175,61 @@ void Simulation::build_wall_candidates() {
                    });
 }
 
+void Simulation::particles_replaced(
+    const std::vector<std::pair<std::uint64_t, std::uint64_t>>& parent_of) {
+  // The parents' candidates cover their fragments only while every particle has moved less
+  // than skin/4 since the build (then fragments and neighbours may each move skin/4 more).
+  const double quarter = 0.25 * options.skin;
+  if (need_rebuild_ || options.skin <= 0 || max_disp2_ > quarter * quarter) {
+    particles_changed();
+    return;
+  }
+  const std::vector<std::uint32_t> to_new = nlist_.apply_replacement(particles, parent_of);
+  if (to_new.empty()) {
+    particles_changed();
+    return;
+  }
+  auto& p = particles;
+  const std::size_t n_kept = static_cast<std::size_t>(std::count_if(
+      to_new.begin(), to_new.end(), [](std::uint32_t s) { return s != NeighborList::none; }));
+  std::vector<Vec3> x_build(p.size());
+  for (std::size_t old = 0; old < to_new.size(); ++old)
+    if (to_new[old] != NeighborList::none) x_build[to_new[old]] = x_at_build_[old];
+  for (std::size_t s = n_kept; s < p.size(); ++s) x_build[s] = p.x[s];
+  x_at_build_.swap(x_build);
+  // wall candidates: kept ones remapped, each fragment takes its parent's (history cleared)
+  std::unordered_map<std::uint64_t, std::uint64_t> parent;  // fragment id -> parent id
+  for (const auto& [f, par] : parent_of) parent[f] = par;
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> children;
+  for (std::size_t s = n_kept; s < p.size(); ++s)
+    children[parent[p.id[s]]].push_back(static_cast<std::uint32_t>(s));
+  std::vector<WallContactRecord> kept, added;
+  for (const auto& c : wall_candidates_) {
+    const std::uint32_t s = c.particle < to_new.size() ? to_new[c.particle] : NeighborList::none;
+    if (s != NeighborList::none) {
+      WallContactRecord r = c;
+      r.particle = s;
+      kept.push_back(r);
+      continue;
+    }
+    for (auto f : children[c.id]) added.push_back({f, c.wall, c.feature, 0, p.id[f], {}});
+  }
+  std::stable_sort(added.begin(), added.end(),
+                   [](const WallContactRecord& a, const WallContactRecord& b) {
+                     return a.particle < b.particle;
+                   });
+  kept.insert(kept.end(), added.begin(), added.end());
+  wall_candidates_.swap(kept);
+  displacement_limit_ = std::min(displacement_limit_, quarter);
+  forces_cleared_ = false;
+}
+
 void Simulation::compute_forces() {
   if (!need_rebuild_) {
     double travel = 0;
     for (double t : wall_travel_) travel = std::max(travel, t);
-    const double half = 0.5 * options.skin;
-    if (max_disp2_ > half * half || travel > half) need_rebuild_ = true;
+    const double limit = displacement_limit_;
+    if (max_disp2_ > limit * limit || travel > limit) need_rebuild_ = true;
   }
   if (need_rebuild_) rebuild();
   auto& p = particles;
@@ -476,6 +527,7 @@ void Simulation::save(Archive& a) const {
   a.put_value("sim/ledger", ledger);
   a.put_value("sim/elastic", elastic_energy_);
   a.put_value("sim/max_disp2", max_disp2_);
+  a.put_value("sim/displacement_limit", displacement_limit_);
   a.put_value("sim/need_rebuild", static_cast<std::uint8_t>(need_rebuild_));
   a.put_value("sim/forces_cleared", static_cast<std::uint8_t>(forces_cleared_));
   for (const auto& m : modules) m->save(a);
@@ -518,6 +570,7 @@ void Simulation::load(const Archive& a) {
   flush_denormals_to_zero();
   elastic_energy_ = a.get_value<double>("sim/elastic");
   max_disp2_ = a.get_value<double>("sim/max_disp2");
+  displacement_limit_ = a.get_value<double>("sim/displacement_limit");
   for (auto& m : modules) m->load(a);
   // a module may have inserted or removed particles after the last force computation
   need_rebuild_ = a.get_value<std::uint8_t>("sim/need_rebuild") != 0;

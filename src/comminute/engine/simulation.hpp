@@ -83,6 +83,11 @@ class Simulation {
     need_rebuild_ = true;
     forces_cleared_ = false;
   }
+  // After compact() removed broken parents and their fragments were appended: updates the
+  // neighbour list in place instead of rebuilding it (the fragments take their parents'
+  // candidates; the displacement trigger drops to skin/4 until the next rebuild so that this
+  // stays exact). parent_of: (fragment id, parent id). Falls back to particles_changed().
+  void particles_replaced(const std::vector<std::pair<std::uint64_t, std::uint64_t>>& parent_of);
 
   const NeighborList& pairs() const { return nlist_; }
   NeighborList& pairs() { return nlist_; }
@@ -122,6 +127,7 @@ class Simulation {
   std::uint64_t rebuilds_ = 0;
   double elastic_energy_ = 0;
   double max_disp2_ = 0;
+  double displacement_limit_ = 0;  // rebuild when a particle moved further (skin/2, or skin/4)
 };
 
 }  // namespace comminute

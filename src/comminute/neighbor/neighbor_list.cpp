@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 #include "comminute/core/parallel.hpp"
 #include "comminute/neighbor/cell_grid.hpp"
@@ -147,24 +148,25 @@ void NeighborList::transfer_history(const ParticleStore& p, std::size_t total) {
     out = it->second;
     return true;
   };
-  constexpr std::uint32_t none = 0xFFFFFFFFu;
   auto& pos = new_position_;
   pos.assign(m, none);
   for (std::size_t e = 0; e < m; ++e) {
     std::uint32_t a = 0, b = 0;
     if (!find_slot(saved_[e].a, a) || !find_slot(saved_[e].b, b)) continue;  // removed particle
-    // owner: the large one of a mixed pair, else the smaller slot
-    const bool swap = large_[a] == large_[b] ? b < a : large_[b] != 0;
-    if (swap) std::swap(a, b);
-    for (std::uint32_t k = row_[a]; k < row_[a + 1]; ++k)
-      if (second[k] == b) {
-        pos[e] = k;
-        if (swap) {  // the history's orientation follows the owner: flip its vectors
-          history[e].tangential_spring = -history[e].tangential_spring;
-          history[e].rolling_spring = -history[e].rolling_spring;
+    // owner: the large one of a mixed pair, else the smaller slot (pairs added by
+    // apply_replacement are owned by the fragment: look in the other row too)
+    const std::uint32_t saved_owner = a;
+    if (large_[a] == large_[b] ? b < a : large_[b] != 0) std::swap(a, b);
+    for (int attempt = 0; attempt < 2 && pos[e] == none; ++attempt, std::swap(a, b))
+      for (std::uint32_t k = row_[a]; k < row_[a + 1]; ++k)
+        if (second[k] == b) {
+          pos[e] = k;
+          if (a != saved_owner) {  // the history's orientation follows the owner: flip it
+            history[e].tangential_spring = -history[e].tangential_spring;
+            history[e].rolling_spring = -history[e].rolling_spring;
+          }
+          break;
         }
-        break;
-      }
   }
   // order the kept entries by new position (dropped ones last) with an in-place permutation
   auto& order = order_;
@@ -202,6 +204,71 @@ void NeighborList::transfer_history(const ParticleStore& p, std::size_t total) {
   }
   for (std::size_t k = 0; k < total; ++k)
     if (!touching[k]) history[k] = ContactHistory{};
+}
+
+std::vector<std::uint32_t> NeighborList::apply_replacement(
+    const ParticleStore& p, const std::vector<std::pair<std::uint64_t, std::uint64_t>>& parent_of) {
+  const std::size_t n_old = ids_.size(), n = p.size();
+  // old slot -> new slot: compact() keeps the order of the particles it keeps
+  std::vector<std::uint32_t> to_new(n_old, none);
+  std::size_t q = 0;
+  for (std::size_t old = 0; old < n_old; ++old)
+    if (q < n && p.id[q] == ids_[old]) to_new[old] = static_cast<std::uint32_t>(q++);
+  const std::size_t n_kept = q;
+  std::unordered_map<std::uint64_t, std::uint64_t> parent;  // fragment id -> parent id
+  for (const auto& [f, par] : parent_of) parent[f] = par;
+  for (std::size_t s = n_kept; s < n; ++s)
+    if (!parent.count(p.id[s])) return {};  // something else was inserted: rebuild
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> kept_partners, children;
+  std::unordered_map<std::uint64_t, std::vector<std::uint64_t>> broken_neighbours;
+  std::size_t w = 0;
+  for (std::size_t k = 0; k < first.size(); ++k) {
+    const std::uint32_t a = to_new[first[k]], b = to_new[second[k]];
+    if (a == none || b == none) {  // a pair of a removed parent
+      if (a == none && b != none) kept_partners[ids_[first[k]]].push_back(b);
+      if (b == none && a != none) kept_partners[ids_[second[k]]].push_back(a);
+      if (a == none && b == none) {
+        broken_neighbours[ids_[first[k]]].push_back(ids_[second[k]]);
+        broken_neighbours[ids_[second[k]]].push_back(ids_[first[k]]);
+      }
+      continue;
+    }
+    first[w] = a;
+    second[w] = b;
+    history[w] = history[k];
+    touching[w] = touching[k];
+    ++w;
+  }
+  first.resize(w);
+  second.resize(w);
+  history.resize(w);
+  touching.resize(w);
+  for (std::size_t s = n_kept; s < n; ++s)
+    children[parent[p.id[s]]].push_back(static_cast<std::uint32_t>(s));
+  // rows of the fragments (the highest slots) follow the kept rows: grouping by owner holds
+  for (std::size_t s = n_kept; s < n; ++s) {
+    const auto fs = static_cast<std::uint32_t>(s);
+    const std::uint64_t par = parent[p.id[s]];
+    auto add = [&](std::uint32_t j) {
+      first.push_back(fs);
+      second.push_back(j);
+      history.push_back({});
+      touching.push_back(0);
+    };
+    for (auto j : kept_partners[par]) add(j);
+    for (auto g : children[par])
+      if (g < fs) add(g);
+    for (auto other : broken_neighbours[par])
+      for (auto g : children[other])
+        if (g < fs) add(g);
+  }
+  std::vector<std::uint8_t> large(n, 0);
+  for (std::size_t old = 0; old < n_old; ++old)
+    if (to_new[old] != none) large[to_new[old]] = large_[old];
+  large_ = std::move(large);
+  ids_ = p.id;
+  make_rows(n);
+  return to_new;
 }
 
 std::vector<std::size_t> NeighborList::cell_order(const ParticleStore& p, double cell) {

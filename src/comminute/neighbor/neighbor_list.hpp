@@ -29,6 +29,16 @@ class NeighborList {
   // Builds the list for the current positions and moves the history of touching pairs over from
   // the previous list, matched by particle ids.
   void build(const ParticleStore& p, double skin);
+  // Updates the list after particles were replaced without a rebuild: `p` is the store after
+  // compact() removed the parents and the fragments were appended at its end; parent_of lists
+  // (fragment id, parent id). Pairs of kept particles are kept (slots remapped, history kept);
+  // each fragment gets as candidates its parent's candidates and the fragments of its parent and
+  // of the parent's broken neighbours (fragments lie inside their parent). Returns the new slot
+  // of each old slot (none = removed), or an empty vector when the update is not possible.
+  std::vector<std::uint32_t> apply_replacement(
+      const ParticleStore& p,
+      const std::vector<std::pair<std::uint64_t, std::uint64_t>>& parent_of);
+  static constexpr std::uint32_t none = 0xFFFFFFFFu;
   // Slot order that sorts particles by grid cell (memory locality); cell edge = `cell`.
   static std::vector<std::size_t> cell_order(const ParticleStore& p, double cell);
   // Ids of the slots when the list was built (for checkpoints and module look-ups).

@@ -30,9 +30,7 @@ int main(int argc, char** argv) {
   const long warm = argc > 2 ? std::atol(argv[2]) : 1000;
   const long steps = argc > 3 ? std::atol(argv[3]) : 2000;
   try {
-    io::CaseFile file = io::CaseFile::load(argv[1]);
-    io::DemCase c = io::build_dem_case(file.root());
-    file.reject_unknown();
+    io::DemCase c = io::load_plain_dem_case(argv[1]);
     Simulation& sim = *c.sim;
     sim.setup();
     const double rss_setup = rss_mb();

@@ -19,9 +19,7 @@ int main(int argc, char** argv) {
   const long max_steps = argc > 3 ? std::atol(argv[3]) : 40000;
   const double ke_limit = argc > 4 ? std::atof(argv[4]) : 1e-9;
   try {
-    io::CaseFile file = io::CaseFile::load(argv[1]);
-    io::DemCase c = io::build_dem_case(file.root());
-    file.reject_unknown();
+    io::DemCase c = io::load_plain_dem_case(argv[1]);
     Simulation& sim = *c.sim;
     sim.setup();
     long steps = 0;

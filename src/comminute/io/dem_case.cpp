@@ -258,4 +258,11 @@ DemCase build_dem_case(const CaseTable& root) {
   return out;
 }
 
+DemCase load_plain_dem_case(const std::filesystem::path& path) {
+  const CaseFile file = CaseFile::load(path);
+  DemCase c = build_dem_case(file.root());
+  file.reject_unknown();
+  return c;
+}
+
 }  // namespace comminute::io

@@ -21,4 +21,8 @@ struct DemCase {
 
 DemCase build_dem_case(const CaseTable& root);
 
+// Loads a case file that holds only DEM tables (benchmarks, tools): builds it and rejects unknown
+// keys. `comminute run` reads more tables ([output], breakage) and does its own loading.
+DemCase load_plain_dem_case(const std::filesystem::path& path);
+
 }  // namespace comminute::io

@@ -73,10 +73,6 @@ void BreakageModule::configure(Simulation& sim) {
   fines_mass_.resize(n_materials_, 0.0);
   pending_ = 0;
   for (std::size_t i = 0; i < p.size(); ++i) pending_ += (p.flags[i] & pflag::growing) ? 1 : 0;
-  rebuilds_seen_ = sim.neighbor_rebuilds();
-  // A checkpoint written right after a replacement holds the pair list of the old slots (the
-  // engine does not save its "rebuild needed" flag): rebuild when the list does not match.
-  if (sim.pairs().ids_at_build() != p.id) sim.particles_changed();
   if (!opt_.output_dir.empty()) std::filesystem::create_directories(opt_.output_dir);
   configured_ = true;
 }
@@ -140,7 +136,7 @@ void BreakageModule::grow(Simulation& sim) {
     }
   }
   std::vector<WallContact> found;
-  double grown = 0;
+  bool rebuild = false;
   std::vector<std::uint8_t> was_growing(n, 0);
   for (std::size_t i = 0; i < n; ++i) was_growing[i] = (p.flags[i] & pflag::growing) ? 1 : 0;
   std::vector<double> r_before = p.radius;
@@ -152,9 +148,15 @@ void BreakageModule::grow(Simulation& sim) {
       for (const auto& c : found)  // distance to the wall = r - overlap; keep overlap <= eps r
         limit[i] = std::min(limit[i], (p.radius[i] - c.overlap) / (1.0 - eps));
     }
-    const double r_new = std::min(
+    double r_new = std::min(
         {target[i], p.radius[i] + opt_.growth_step * target[i], std::max(p.radius[i], limit[i])});
-    grown = std::max(grown, r_new - p.radius[i]);
+    // the pair list covers unlisted spheres only up to the reach margin: grow within it, and have
+    // the list rebuilt once it is used up
+    const double margin = std::max(0.0, sim.reach_margin(i));
+    if (r_new - p.radius[i] >= margin) {
+      r_new = p.radius[i] + margin;
+      rebuild = true;
+    }
     p.radius[i] = r_new;
     if (r_new >= target[i]) {
       p.radius[i] = target[i];
@@ -191,20 +193,7 @@ void BreakageModule::grow(Simulation& sim) {
     }
   }
   add_energy(sim, created);
-  // The neighbour list holds pairs within r_i + r_j + skin at its build: growth eats that margin,
-  // so ask for a rebuild once a fragment has grown by a tenth of the skin since the last one.
-  if (sim.neighbor_rebuilds() != rebuilds_seen_) {
-    rebuilds_seen_ = sim.neighbor_rebuilds();
-    // A checkpoint written right after a replacement holds the pair list of the old slots (the
-    // engine does not save its "rebuild needed" flag): rebuild when the list does not match.
-    if (sim.pairs().ids_at_build() != p.id) sim.particles_changed();
-    growth_since_rebuild_ = 0;
-  }
-  growth_since_rebuild_ += grown;
-  if (growth_since_rebuild_ > 0.1 * sim.options.skin) {
-    sim.particles_changed();
-    growth_since_rebuild_ = 0;
-  }
+  if (rebuild) sim.particles_changed();
 }
 
 void BreakageModule::pre_force(Simulation& sim) {
@@ -213,6 +202,7 @@ void BreakageModule::pre_force(Simulation& sim) {
 }
 
 void BreakageModule::post_force(Simulation& sim) {
+  if (pending_ > 0) grow(sim);
   update_events(sim);
 }
 
@@ -386,8 +376,8 @@ void BreakageModule::end_of_step(Simulation& sim) {
       replace(sim, i, around[i], broken_records_[b]);
     }
     p.compact();
-    sim.particles_replaced(fragment_parents_);
-    fragment_parents_.clear();
+    sim.particles_replaced(fragment_origins_);
+    fragment_origins_.clear();
     broken_ids_.clear();
     broken_records_.clear();
   }
@@ -467,7 +457,7 @@ void BreakageModule::replace(Simulation& sim, std::size_t parent,
     init.flags = f.fines ? pflag::unbreakable : 0;
     const bool growing = placed[k].r < radii[k];
     if (growing) init.flags |= pflag::growing;
-    fragment_parents_.emplace_back(p.add_with_mass(init, f.mass), p.id[parent]);
+    fragment_origins_.push_back({p.add_with_mass(init, f.mass), p.id[parent], xp});
     const std::size_t s = p.size() - 1;
     p.inertia[s] = inertia[k];  // of the full-size sphere from the start
     for (std::size_t q = 0; q < parent_fields.size(); ++q) p.field(q)[s] = parent_fields[q];

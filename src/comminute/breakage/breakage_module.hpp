@@ -26,6 +26,7 @@
 #include "comminute/breakage/progeny/t10_model.hpp"
 #include "comminute/core/vec3.hpp"
 #include "comminute/engine/module.hpp"
+#include "comminute/engine/simulation.hpp"
 
 namespace comminute::breakage {
 
@@ -130,9 +131,9 @@ class BreakageModule final : public Module {
   // field indices
   std::size_t f_init_ = 0, f_generation_ = 0, f_target_ = 0, f_in_event_ = 0, f_energy_ = 0,
               f_force_ = 0, f_baseline_ = 0, f_quiet_ = 0;
-  std::vector<double> load_, force_;                                       // per slot, scratch
-  std::vector<std::pair<std::uint64_t, std::uint64_t>> fragment_parents_;  // (fragment, parent) ids
-  std::vector<std::uint64_t> broken_ids_;                                  // found in post_force
+  std::vector<double> load_, force_;              // per slot, scratch
+  std::vector<FragmentOrigin> fragment_origins_;  // fragments appended this step
+  std::vector<std::uint64_t> broken_ids_;         // found in post_force
   std::vector<EventRecord> broken_records_;
   Rng strength_rng_, placement_rng_;
   std::size_t pending_ = 0;
@@ -142,8 +143,6 @@ class BreakageModule final : public Module {
   Vec3 fines_momentum_;
   double removed_ = 0;
   double created_ = 0;
-  double growth_since_rebuild_ = 0;
-  std::uint64_t rebuilds_seen_ = 0;
   struct LedgerRow {
     double time, removed_total, breakage_removed, created, particle_mass, fines_mass;
     Vec3 momentum, fines_momentum;

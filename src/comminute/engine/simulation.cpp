@@ -131,7 +131,10 @@ void Simulation::rebuild() {
   }
   nlist_.build(p, options.skin);
   x_at_build_ = p.x;
-  displacement_limit_ = 0.5 * options.skin;
+  r_at_build_ = p.radius;
+  reach_tracked_.clear();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.flags[i] & pflag::growing) reach_tracked_.push_back(static_cast<std::uint32_t>(i));
   build_wall_candidates();
   need_rebuild_ = false;
   ++rebuilds_;
@@ -175,15 +178,14 @@ void Simulation::build_wall_candidates() {
                    });
 }
 
-void Simulation::particles_replaced(
-    const std::vector<std::pair<std::uint64_t, std::uint64_t>>& parent_of) {
-  // The parents' candidates cover their fragments only while every particle has moved less
-  // than skin/4 since the build (then fragments and neighbours may each move skin/4 more).
-  const double quarter = 0.25 * options.skin;
-  if (need_rebuild_ || options.skin <= 0 || max_disp2_ > quarter * quarter) {
+void Simulation::particles_replaced(const std::vector<FragmentOrigin>& origins) {
+  if (need_rebuild_ || options.skin <= 0) {
     particles_changed();
     return;
   }
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> parent_of;
+  for (const auto& o : origins) parent_of.emplace_back(o.fragment_id, o.parent_id);
+  const std::vector<std::uint64_t> ids_before = nlist_.ids_at_build();
   const std::vector<std::uint32_t> to_new = nlist_.apply_replacement(particles, parent_of);
   if (to_new.empty()) {
     particles_changed();
@@ -192,17 +194,39 @@ void Simulation::particles_replaced(
   auto& p = particles;
   const std::size_t n_kept = static_cast<std::size_t>(std::count_if(
       to_new.begin(), to_new.end(), [](std::uint32_t s) { return s != NeighborList::none; }));
-  std::vector<Vec3> x_build(p.size());
+  std::unordered_map<std::uint64_t, std::uint32_t> slot_before;  // removed id -> old slot
   for (std::size_t old = 0; old < to_new.size(); ++old)
-    if (to_new[old] != NeighborList::none) x_build[to_new[old]] = x_at_build_[old];
-  for (std::size_t s = n_kept; s < p.size(); ++s) x_build[s] = p.x[s];
+    if (to_new[old] == NeighborList::none)
+      slot_before[ids_before[old]] = static_cast<std::uint32_t>(old);
+  std::vector<Vec3> x_build(p.size());
+  std::vector<double> r_build(p.size());
+  for (std::size_t old = 0; old < to_new.size(); ++old)
+    if (to_new[old] != NeighborList::none) {
+      x_build[to_new[old]] = x_at_build_[old];
+      r_build[to_new[old]] = r_at_build_[old];
+    }
+  std::vector<std::uint32_t> tracked;
+  for (std::uint32_t s : reach_tracked_)
+    if (to_new[s] != NeighborList::none) tracked.push_back(to_new[s]);
+  // A fragment at x inside its parent (at x_p now, reach (x_pb, r_pb) at the build) gets the
+  // reach at build (x - (x_p - x_pb), r_pb - |x - x_p|): a sphere inside the parent's, so the
+  // parent's candidates cover it exactly as they covered the parent.
+  std::unordered_map<std::uint64_t, const FragmentOrigin*> origin_of;  // by fragment id
+  for (const auto& o : origins) origin_of[o.fragment_id] = &o;
+  for (std::size_t s = n_kept; s < p.size(); ++s) {
+    const FragmentOrigin& o = *origin_of.at(p.id[s]);
+    const std::uint32_t q = slot_before.at(o.parent_id);
+    x_build[s] = p.x[s] - (o.parent_x - x_at_build_[q]);
+    r_build[s] = r_at_build_[q] - norm(p.x[s] - o.parent_x);
+    tracked.push_back(static_cast<std::uint32_t>(s));
+  }
   x_at_build_.swap(x_build);
+  r_at_build_.swap(r_build);
+  reach_tracked_.swap(tracked);
   // wall candidates: kept ones remapped, each fragment takes its parent's (history cleared)
-  std::unordered_map<std::uint64_t, std::uint64_t> parent;  // fragment id -> parent id
-  for (const auto& [f, par] : parent_of) parent[f] = par;
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> children;
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> children;  // by parent id
   for (std::size_t s = n_kept; s < p.size(); ++s)
-    children[parent[p.id[s]]].push_back(static_cast<std::uint32_t>(s));
+    children[origin_of.at(p.id[s])->parent_id].push_back(static_cast<std::uint32_t>(s));
   std::vector<WallContactRecord> kept, added;
   for (const auto& c : wall_candidates_) {
     const std::uint32_t s = c.particle < to_new.size() ? to_new[c.particle] : NeighborList::none;
@@ -220,16 +244,27 @@ void Simulation::particles_replaced(
                    });
   kept.insert(kept.end(), added.begin(), added.end());
   wall_candidates_.swap(kept);
-  displacement_limit_ = std::min(displacement_limit_, quarter);
   forces_cleared_ = false;
+}
+
+double Simulation::reach_change(std::size_t i) const {
+  return norm(particles.x[i] - x_at_build_[i]) + particles.radius[i] - r_at_build_[i];
+}
+
+double Simulation::reach_margin(std::size_t i) const {
+  if (need_rebuild_ || i >= x_at_build_.size()) return 0;
+  return 0.5 * options.skin - reach_change(i);
 }
 
 void Simulation::compute_forces() {
   if (!need_rebuild_) {
     double travel = 0;
     for (double t : wall_travel_) travel = std::max(travel, t);
-    const double limit = displacement_limit_;
-    if (max_disp2_ > limit * limit || travel > limit) need_rebuild_ = true;
+    // |x - x_build| for every particle; plus the change of radius for the tracked ones
+    double reach = std::sqrt(max_disp2_);
+    for (std::uint32_t s : reach_tracked_) reach = std::max(reach, reach_change(s));
+    const double limit = 0.5 * options.skin;
+    if (reach > limit || travel > limit) need_rebuild_ = true;
   }
   if (need_rebuild_) rebuild();
   auto& p = particles;
@@ -511,6 +546,8 @@ void Simulation::save(Archive& a) const {
   a.put("pairs/ids", nlist_.ids_at_build());
   a.put("pairs/large", nlist_.large());
   a.put("pairs/x_at_build", x_at_build_);
+  a.put("pairs/r_at_build", r_at_build_);
+  a.put("pairs/reach_tracked", reach_tracked_);
   a.put("walls/candidates", wall_candidates_);
   a.put("walls/travel", wall_travel_);
   a.put("walls/full_scan", wall_full_scan_);
@@ -527,7 +564,6 @@ void Simulation::save(Archive& a) const {
   a.put_value("sim/ledger", ledger);
   a.put_value("sim/elastic", elastic_energy_);
   a.put_value("sim/max_disp2", max_disp2_);
-  a.put_value("sim/displacement_limit", displacement_limit_);
   a.put_value("sim/need_rebuild", static_cast<std::uint8_t>(need_rebuild_));
   a.put_value("sim/forces_cleared", static_cast<std::uint8_t>(forces_cleared_));
   for (const auto& m : modules) m->save(a);
@@ -553,6 +589,8 @@ void Simulation::load(const Archive& a) {
                  a.get<ContactHistory>("pairs/history"), a.get<std::uint8_t>("pairs/touching"),
                  a.get<std::uint64_t>("pairs/ids"), a.get<std::uint8_t>("pairs/large"));
   x_at_build_ = a.get<Vec3>("pairs/x_at_build");
+  r_at_build_ = a.get<double>("pairs/r_at_build");
+  reach_tracked_ = a.get<std::uint32_t>("pairs/reach_tracked");
   wall_candidates_ = a.get<WallContactRecord>("walls/candidates");
   wall_travel_ = a.get<double>("walls/travel");
   wall_full_scan_ = a.get<std::uint8_t>("walls/full_scan");
@@ -570,7 +608,6 @@ void Simulation::load(const Archive& a) {
   flush_denormals_to_zero();
   elastic_energy_ = a.get_value<double>("sim/elastic");
   max_disp2_ = a.get_value<double>("sim/max_disp2");
-  displacement_limit_ = a.get_value<double>("sim/displacement_limit");
   for (auto& m : modules) m->load(a);
   // a module may have inserted or removed particles after the last force computation
   need_rebuild_ = a.get_value<std::uint8_t>("sim/need_rebuild") != 0;

@@ -48,6 +48,13 @@ struct Observables {
   EnergyLedger ledger;
 };
 
+// A fragment appended by a breakage module, and where its parent was when it broke.
+struct FragmentOrigin {
+  std::uint64_t fragment_id = 0;
+  std::uint64_t parent_id = 0;
+  Vec3 parent_x;  // m
+};
+
 struct SimulationOptions {
   double skin = 0;      // m, Verlet skin (0: 0.2 x mean diameter at the first build with particles)
   int sort_every = 20;  // re-sort particles by cell every this many list rebuilds (0: never)
@@ -84,10 +91,15 @@ class Simulation {
     forces_cleared_ = false;
   }
   // After compact() removed broken parents and their fragments were appended: updates the
-  // neighbour list in place instead of rebuilding it (the fragments take their parents'
-  // candidates; the displacement trigger drops to skin/4 until the next rebuild so that this
-  // stays exact). parent_of: (fragment id, parent id). Falls back to particles_changed().
-  void particles_replaced(const std::vector<std::pair<std::uint64_t, std::uint64_t>>& parent_of);
+  // neighbour list in place instead of rebuilding it. Each fragment takes its parent's candidates
+  // and a reach at build inherited from its parent (see reach_margin()), so the usual skin/2
+  // trigger stays exact. Falls back to particles_changed() when the update is not possible.
+  void particles_replaced(const std::vector<FragmentOrigin>& origins);
+  // How much particle i may still move or grow (m) before the neighbour list stops covering it:
+  // skin/2 - (|x - x_build| + r - r_build). Radii may change between rebuilds only for particles
+  // flagged pflag::growing (and fragments); a module that grows one by more than this margin must
+  // call particles_changed().
+  double reach_margin(std::size_t i) const;
 
   const NeighborList& pairs() const { return nlist_; }
   NeighborList& pairs() { return nlist_; }
@@ -115,7 +127,11 @@ class Simulation {
   std::vector<WallContactRecord> wall_contacts_;    // touching now
   std::vector<std::uint8_t> wall_full_scan_;        // per wall: surface moves, check every step
   std::vector<double> wall_travel_;                 // per wall: distance moved since the build
+  // Reach at the last build: a particle's pairs cover every sphere within skin of the sphere
+  // (x_at_build_, r_at_build_). Fragments get a virtual one inside their parent's.
   std::vector<Vec3> x_at_build_;
+  std::vector<double> r_at_build_;
+  std::vector<std::uint32_t> reach_tracked_;  // slots whose radius or reach changed since the build
   struct CrossForce {  // a pair's share for a particle owned by another thread
     std::uint32_t particle;
     Vec3 force, torque;
@@ -127,7 +143,7 @@ class Simulation {
   std::uint64_t rebuilds_ = 0;
   double elastic_energy_ = 0;
   double max_disp2_ = 0;
-  double displacement_limit_ = 0;  // rebuild when a particle moved further (skin/2, or skin/4)
+  double reach_change(std::size_t i) const;  // |x - x_build| + r - r_build (m)
 };
 
 }  // namespace comminute

@@ -73,3 +73,62 @@ TEST(NeighborList, CellOrderIsAPermutation) {
   std::sort(order.begin(), order.end());
   for (std::size_t k = 0; k < order.size(); ++k) ASSERT_EQ(order[k], k);
 }
+
+// In-place update (breakage replacement): remove a quarter of a size-ratio-10 bed, append new
+// spheres, some larger than any at the build and some twice (a second update on top of the
+// first, with the appended spheres of the first in the index's overflow cells). With the build
+// positions unchanged, the updated list must equal a fresh build exactly, with no pair twice;
+// rebuild_index() (checkpoints) must give the same list.
+TEST(NeighborList, InPlaceUpdateEqualsAFreshBuild) {
+  const double skin = 0.0001;
+  ParticleStore p = random_bed(3000, 0.0005, 0.005, 0.03, 0.05, 4);
+  NeighborList nl, restored;
+  nl.build(p, skin);
+  Rng rng(5);
+  for (int round = 0; round < 2; ++round) {
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (rng.uniform() < 0.25) p.flags[i] |= pflag::remove;
+    p.compact();
+    const std::vector<std::uint32_t> to_new = nl.slots_after_removal(p);
+    ASSERT_FALSE(to_new.empty());
+    for (int k = 0; k < 300; ++k) {
+      ParticleInit init;
+      init.radius = k % 50 == 0 ? 0.007 : 0.0005 * rng.uniform(0.3, 1.0);
+      init.x = {rng.uniform(0, 0.05), rng.uniform(0, 0.05), rng.uniform(0, 0.05)};
+      init.density = 1000;
+      p.add(init);
+    }
+    nl.update_in_place(p, to_new, p.x, p.radius);
+    EXPECT_EQ(listed(nl, p), brute_force(p, skin)) << "round " << round;
+  }
+  // a list restored from a checkpoint re-creates its index and continues identically
+  restored.restore(nl.first, nl.second, nl.history, nl.touching, nl.ids_at_build(), nl.large());
+  restored.rebuild_index(p.x, p.radius, skin);
+  for (std::size_t i = 0; i < p.size(); i += 3) p.flags[i] |= pflag::remove;
+  p.compact();
+  const auto to_new = nl.slots_after_removal(p);
+  for (int k = 0; k < 100; ++k) {
+    ParticleInit init;
+    init.radius = 0.0004;
+    init.x = {rng.uniform(0, 0.05), rng.uniform(0, 0.05), rng.uniform(0, 0.05)};
+    init.density = 1000;
+    p.add(init);
+  }
+  nl.update_in_place(p, to_new, p.x, p.radius);
+  restored.update_in_place(p, restored.slots_after_removal(p), p.x, p.radius);
+  EXPECT_EQ(nl.first, restored.first);
+  EXPECT_EQ(nl.second, restored.second);
+  EXPECT_EQ(listed(restored, p), brute_force(p, skin));
+}
+
+// Appended particles are recognised by their new ids: a store whose kept particles changed order
+// cannot be updated in place.
+TEST(NeighborList, ReorderedStoreIsNotUpdatedInPlace) {
+  ParticleStore p = random_bed(200, 0.001, 0.001, 0.0, 0.02, 6);
+  NeighborList nl;
+  nl.build(p, 0.0002);
+  std::vector<std::size_t> order(p.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = order.size() - 1 - k;
+  p.permute(order);
+  EXPECT_TRUE(nl.slots_after_removal(p).empty());
+}

@@ -141,7 +141,8 @@ void BreakageModule::grow(Simulation& sim) {
   for (std::size_t i = 0; i < n; ++i) was_growing[i] = (p.flags[i] & pflag::growing) ? 1 : 0;
   std::vector<double> r_before = p.radius;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!(p.flags[i] & pflag::growing)) continue;
+    // blocked by a neighbour already: no growth this step (spares the wall look-ups)
+    if (!(p.flags[i] & pflag::growing) || limit[i] <= p.radius[i]) continue;
     for (const auto& w : sim.walls) {
       found.clear();
       w->contacts(p.x[i], p.radius[i], target[i], found);
@@ -336,13 +337,17 @@ void BreakageModule::end_of_step(Simulation& sim) {
     // Slots of the parents and the spheres around them (other parents included).
     std::unordered_map<std::uint64_t, std::size_t> slot_of;
     const std::unordered_set<std::uint64_t> wanted(broken_ids_.begin(), broken_ids_.end());
+    std::vector<std::uint8_t> is_parent(p.size(), 0);
     for (std::size_t i = 0; i < p.size(); ++i)
-      if (wanted.count(p.id[i])) slot_of[p.id[i]] = i;
+      if ((p.flags[i] & pflag::unbreakable) && wanted.count(p.id[i])) {
+        slot_of[p.id[i]] = i;
+        is_parent[i] = 1;
+      }
     std::unordered_map<std::size_t, std::vector<std::uint32_t>> around;
     const auto& nl = sim.pairs();
     for (std::size_t k = 0; k < nl.size(); ++k) {
       const std::uint32_t i = nl.first[k], j = nl.second[k];
-      const bool bi = wanted.count(p.id[i]) > 0, bj = wanted.count(p.id[j]) > 0;
+      const bool bi = is_parent[i] != 0, bj = is_parent[j] != 0;
       if (!bi && !bj) continue;
       if (bi) around[i].push_back(j);
       if (bj) around[j].push_back(i);
@@ -360,7 +365,7 @@ void BreakageModule::end_of_step(Simulation& sim) {
     }
     std::vector<WallContact> found;
     for (const auto& c : sim.wall_contacts()) {
-      if (!wanted.count(p.id[c.particle])) continue;
+      if (!is_parent[c.particle]) continue;
       found.clear();
       sim.walls[c.wall]->contacts(p.x[c.particle], p.radius[c.particle], 0.0, found);
       for (const auto& f : found)
@@ -376,8 +381,8 @@ void BreakageModule::end_of_step(Simulation& sim) {
       replace(sim, i, around[i], broken_records_[b]);
     }
     p.compact();
-    sim.particles_replaced(fragment_origins_);
-    fragment_origins_.clear();
+    sim.particles_replaced(fragments_added_);
+    fragments_added_.clear();
     broken_ids_.clear();
     broken_records_.clear();
   }
@@ -457,7 +462,7 @@ void BreakageModule::replace(Simulation& sim, std::size_t parent,
     init.flags = f.fines ? pflag::unbreakable : 0;
     const bool growing = placed[k].r < radii[k];
     if (growing) init.flags |= pflag::growing;
-    fragment_origins_.push_back({p.add_with_mass(init, f.mass), p.id[parent], xp});
+    fragments_added_.push_back({p.add_with_mass(init, f.mass), radii[k]});
     const std::size_t s = p.size() - 1;
     p.inertia[s] = inertia[k];  // of the full-size sphere from the start
     for (std::size_t q = 0; q < parent_fields.size(); ++q) p.field(q)[s] = parent_fields[q];

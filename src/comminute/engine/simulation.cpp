@@ -140,6 +140,16 @@ void Simulation::rebuild() {
   ++rebuilds_;
 }
 
+void Simulation::add_wall_candidates(std::uint32_t i, std::uint32_t w, const Vec3& x, double r,
+                                     std::vector<WallContact>& found) {
+  found.clear();
+  const bool near = walls[w]->contacts(x, r, options.skin, found) > 0;
+  if (!near && !wall_full_scan_[w]) return;
+  // one candidate per (particle, wall, feature); a full-scan wall keeps one per particle
+  if (found.empty()) found.push_back({{}, {}, -1, 0});
+  for (const auto& c : found) wall_candidates_.push_back({i, w, c.feature, 0, particles.id[i], {}});
+}
+
 void Simulation::build_wall_candidates() {
   // histories of the touching wall contacts, by (id, wall, feature)
   std::vector<WallContactRecord> old;
@@ -158,16 +168,12 @@ void Simulation::build_wall_candidates() {
     wall_full_scan_[w] =
         walls[w]->surface_moves() && norm2(walls[w]->kinematics.angular_velocity) > 0;
     for (std::uint32_t i = 0; i < p.size(); ++i) {
-      found.clear();
-      const bool near = walls[w]->contacts(p.x[i], p.radius[i], options.skin, found) > 0;
-      if (!near && !wall_full_scan_[w]) continue;
-      // one candidate per (particle, wall, feature); a full-scan wall keeps one per particle
-      if (found.empty()) found.push_back({{}, {}, -1, 0});
-      for (const auto& c : found) {
-        WallContactRecord r{i, w, c.feature, 0, p.id[i], {}};
+      const std::size_t from = wall_candidates_.size();
+      add_wall_candidates(i, w, p.x[i], p.radius[i], found);
+      for (std::size_t k = from; k < wall_candidates_.size(); ++k) {
+        WallContactRecord& r = wall_candidates_[k];
         auto it = std::lower_bound(old.begin(), old.end(), r, key_less);
         if (it != old.end() && !key_less(r, *it)) r.history = it->history;
-        wall_candidates_.push_back(r);
       }
     }
   }
@@ -178,26 +184,23 @@ void Simulation::build_wall_candidates() {
                    });
 }
 
-void Simulation::particles_replaced(const std::vector<FragmentOrigin>& origins) {
-  if (need_rebuild_ || options.skin <= 0) {
-    particles_changed();
-    return;
-  }
-  std::vector<std::pair<std::uint64_t, std::uint64_t>> parent_of;
-  for (const auto& o : origins) parent_of.emplace_back(o.fragment_id, o.parent_id);
-  const std::vector<std::uint64_t> ids_before = nlist_.ids_at_build();
-  const std::vector<std::uint32_t> to_new = nlist_.apply_replacement(particles, parent_of);
-  if (to_new.empty()) {
+void Simulation::particles_replaced(const std::vector<NewFragment>& fragments) {
+  if (need_rebuild_ || options.skin <= 0 || !nlist_.can_update_in_place()) {
     particles_changed();
     return;
   }
   auto& p = particles;
+  const std::vector<std::uint32_t> to_new = nlist_.slots_after_removal(p);
   const std::size_t n_kept = static_cast<std::size_t>(std::count_if(
       to_new.begin(), to_new.end(), [](std::uint32_t s) { return s != NeighborList::none; }));
-  std::unordered_map<std::uint64_t, std::uint32_t> slot_before;  // removed id -> old slot
-  for (std::size_t old = 0; old < to_new.size(); ++old)
-    if (to_new[old] == NeighborList::none)
-      slot_before[ids_before[old]] = static_cast<std::uint32_t>(old);
+  std::unordered_map<std::uint64_t, double> final_radius;  // by fragment id
+  for (const auto& f : fragments) final_radius[f.id] = f.final_radius;
+  bool known = !to_new.empty() && p.size() - n_kept == fragments.size();
+  for (std::size_t s = n_kept; known && s < p.size(); ++s) known = final_radius.count(p.id[s]) > 0;
+  if (!known) {  // something else was inserted or moved: rebuild
+    particles_changed();
+    return;
+  }
   std::vector<Vec3> x_build(p.size());
   std::vector<double> r_build(p.size());
   for (std::size_t old = 0; old < to_new.size(); ++old)
@@ -208,42 +211,31 @@ void Simulation::particles_replaced(const std::vector<FragmentOrigin>& origins) 
   std::vector<std::uint32_t> tracked;
   for (std::uint32_t s : reach_tracked_)
     if (to_new[s] != NeighborList::none) tracked.push_back(to_new[s]);
-  // A fragment at x inside its parent (at x_p now, reach (x_pb, r_pb) at the build) gets the
-  // reach at build (x - (x_p - x_pb), r_pb - |x - x_p|): a sphere inside the parent's, so the
-  // parent's candidates cover it exactly as they covered the parent.
-  std::unordered_map<std::uint64_t, const FragmentOrigin*> origin_of;  // by fragment id
-  for (const auto& o : origins) origin_of[o.fragment_id] = &o;
+  // a fragment's reach sphere at "build" is where it is now at its final size: growth up to that
+  // size then never invalidates the list
   for (std::size_t s = n_kept; s < p.size(); ++s) {
-    const FragmentOrigin& o = *origin_of.at(p.id[s]);
-    const std::uint32_t q = slot_before.at(o.parent_id);
-    x_build[s] = p.x[s] - (o.parent_x - x_at_build_[q]);
-    r_build[s] = r_at_build_[q] - norm(p.x[s] - o.parent_x);
+    x_build[s] = p.x[s];
+    r_build[s] = std::max(p.radius[s], final_radius[p.id[s]]);
     tracked.push_back(static_cast<std::uint32_t>(s));
   }
   x_at_build_.swap(x_build);
   r_at_build_.swap(r_build);
   reach_tracked_.swap(tracked);
-  // wall candidates: kept ones remapped, each fragment takes its parent's (history cleared)
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> children;  // by parent id
-  for (std::size_t s = n_kept; s < p.size(); ++s)
-    children[origin_of.at(p.id[s])->parent_id].push_back(static_cast<std::uint32_t>(s));
-  std::vector<WallContactRecord> kept, added;
+  nlist_.update_in_place(p, to_new, x_at_build_, r_at_build_);
+  // wall candidates: kept ones remapped, each fragment's found at its reach sphere
+  std::vector<WallContactRecord> kept;
   for (const auto& c : wall_candidates_) {
     const std::uint32_t s = c.particle < to_new.size() ? to_new[c.particle] : NeighborList::none;
-    if (s != NeighborList::none) {
-      WallContactRecord r = c;
-      r.particle = s;
-      kept.push_back(r);
-      continue;
-    }
-    for (auto f : children[c.id]) added.push_back({f, c.wall, c.feature, 0, p.id[f], {}});
+    if (s == NeighborList::none) continue;
+    WallContactRecord r = c;
+    r.particle = s;
+    kept.push_back(r);
   }
-  std::stable_sort(added.begin(), added.end(),
-                   [](const WallContactRecord& a, const WallContactRecord& b) {
-                     return a.particle < b.particle;
-                   });
-  kept.insert(kept.end(), added.begin(), added.end());
   wall_candidates_.swap(kept);
+  std::vector<WallContact> found;
+  for (std::size_t s = n_kept; s < p.size(); ++s)
+    for (std::uint32_t w = 0; w < walls.size(); ++w)
+      add_wall_candidates(static_cast<std::uint32_t>(s), w, x_at_build_[s], r_at_build_[s], found);
   forces_cleared_ = false;
 }
 
@@ -591,6 +583,7 @@ void Simulation::load(const Archive& a) {
   x_at_build_ = a.get<Vec3>("pairs/x_at_build");
   r_at_build_ = a.get<double>("pairs/r_at_build");
   reach_tracked_ = a.get<std::uint32_t>("pairs/reach_tracked");
+  if (x_at_build_.size() == p.size()) nlist_.rebuild_index(x_at_build_, r_at_build_, options.skin);
   wall_candidates_ = a.get<WallContactRecord>("walls/candidates");
   wall_travel_ = a.get<double>("walls/travel");
   wall_full_scan_ = a.get<std::uint8_t>("walls/full_scan");

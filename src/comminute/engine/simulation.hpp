@@ -48,11 +48,10 @@ struct Observables {
   EnergyLedger ledger;
 };
 
-// A fragment appended by a breakage module, and where its parent was when it broke.
-struct FragmentOrigin {
-  std::uint64_t fragment_id = 0;
-  std::uint64_t parent_id = 0;
-  Vec3 parent_x;  // m
+// A fragment appended by a breakage module: its id and the radius it will grow to.
+struct NewFragment {
+  std::uint64_t id = 0;
+  double final_radius = 0;  // m
 };
 
 struct SimulationOptions {
@@ -91,10 +90,11 @@ class Simulation {
     forces_cleared_ = false;
   }
   // After compact() removed broken parents and their fragments were appended: updates the
-  // neighbour list in place instead of rebuilding it. Each fragment takes its parent's candidates
-  // and a reach at build inherited from its parent (see reach_margin()), so the usual skin/2
-  // trigger stays exact. Falls back to particles_changed() when the update is not possible.
-  void particles_replaced(const std::vector<FragmentOrigin>& origins);
+  // neighbour list in place instead of rebuilding it. Each fragment gets every partner within
+  // skin of its sphere at its final radius (a local search of the build's cell grids), so the
+  // usual skin/2 trigger stays exact and growth needs no rebuild. Falls back to
+  // particles_changed() when the update is not possible.
+  void particles_replaced(const std::vector<NewFragment>& fragments);
   // How much particle i may still move or grow (m) before the neighbour list stops covering it:
   // skin/2 - (|x - x_build| + r - r_build). Radii may change between rebuilds only for particles
   // flagged pflag::growing (and fragments); a module that grows one by more than this margin must
@@ -118,6 +118,8 @@ class Simulation {
   void particle_wall_forces();
   void rebuild();
   void build_wall_candidates();
+  void add_wall_candidates(std::uint32_t i, std::uint32_t w, const Vec3& x, double r,
+                           std::vector<WallContact>& found);
   void kick_drift();
   bool kick();
   [[noreturn]] void report_non_finite() const;
@@ -128,7 +130,7 @@ class Simulation {
   std::vector<std::uint8_t> wall_full_scan_;        // per wall: surface moves, check every step
   std::vector<double> wall_travel_;                 // per wall: distance moved since the build
   // Reach at the last build: a particle's pairs cover every sphere within skin of the sphere
-  // (x_at_build_, r_at_build_). Fragments get a virtual one inside their parent's.
+  // (x_at_build_, r_at_build_); fragments appended in place get theirs at insertion.
   std::vector<Vec3> x_at_build_;
   std::vector<double> r_at_build_;
   std::vector<std::uint32_t> reach_tracked_;  // slots whose radius or reach changed since the build

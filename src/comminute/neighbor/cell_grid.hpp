@@ -1,6 +1,7 @@
 #pragma once
 // A uniform grid of cubic cells over the bounding box of a set of points, filled by counting sort
 // (cell_start / items arrays: the particles of cell c are items[cell_start[c] .. cell_start[c+1])).
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -23,6 +24,21 @@ class CellGrid {
   const std::array<int, 3>& dims() const { return dims_; }
   const std::vector<std::uint32_t>& cell_start() const { return start_; }
   const std::vector<std::uint32_t>& items() const { return items_; }
+  // Calls f(cell index) for the cells within `reach` cells of cell c (per axis).
+  template <class F>
+  void visit_cells_around(const std::array<int, 3>& c, int reach, F&& f) const {
+    for (int k = std::max(0, c[2] - reach); k <= std::min(dims_[2] - 1, c[2] + reach); ++k)
+      for (int j = std::max(0, c[1] - reach); j <= std::min(dims_[1] - 1, c[1] + reach); ++j)
+        for (int i = std::max(0, c[0] - reach); i <= std::min(dims_[0] - 1, c[0] + reach); ++i)
+          f(index(i, j, k));
+  }
+  // Visits the items of the cells within `reach` cells of cell c.
+  template <class F>
+  void visit_around(const std::array<int, 3>& c, int reach, F&& f) const {
+    visit_cells_around(c, reach, [&](std::size_t cell) {
+      for (std::uint32_t q = start_[cell]; q < start_[cell + 1]; ++q) f(items_[q]);
+    });
+  }
 
  private:
   Vec3 lo_;

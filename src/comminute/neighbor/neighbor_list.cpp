@@ -2,30 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 #include "comminute/core/parallel.hpp"
 #include "comminute/neighbor/cell_grid.hpp"
 
 namespace comminute {
-
-namespace {
-
-// Visits the particles in the cells within `reach` cells of cell c.
-template <class F>
-void for_cells_around(const CellGrid& g, const std::array<int, 3>& c, int reach, F&& f) {
-  const auto& d = g.dims();
-  const auto& start = g.cell_start();
-  const auto& items = g.items();
-  for (int k = std::max(0, c[2] - reach); k <= std::min(d[2] - 1, c[2] + reach); ++k)
-    for (int j = std::max(0, c[1] - reach); j <= std::min(d[1] - 1, c[1] + reach); ++j)
-      for (int i = std::max(0, c[0] - reach); i <= std::min(d[0] - 1, c[0] + reach); ++i) {
-        const std::size_t cell = g.index(i, j, k);
-        for (std::uint32_t q = start[cell]; q < start[cell + 1]; ++q) f(items[q]);
-      }
-}
-
-}  // namespace
 
 void NeighborList::make_rows(std::size_t n) {
   row_.assign(n + 1, 0);
@@ -105,15 +86,15 @@ void NeighborList::build(const ParticleStore& p, double skin) {
         }
       };
       if (!large_[i]) {
-        for_cells_around(small_grid, small_grid.cell_of(xi), 1, [&](std::uint32_t j) {
+        small_grid.visit_around(small_grid.cell_of(xi), 1, [&](std::uint32_t j) {
           if (j > i) consider(j);
         });
       } else {
-        for_cells_around(large_grid, large_grid.cell_of(xi), 1, [&](std::uint32_t j) {
+        large_grid.visit_around(large_grid.cell_of(xi), 1, [&](std::uint32_t j) {
           if (j > i) consider(j);
         });
         const int reach = static_cast<int>(std::ceil((ri + r_ref + skin) / small_grid.edge()));
-        for_cells_around(small_grid, small_grid.cell_of(xi), reach, consider);
+        small_grid.visit_around(small_grid.cell_of(xi), reach, consider);
       }
     }
   }
@@ -133,6 +114,8 @@ void NeighborList::build(const ParticleStore& p, double skin) {
   touching.assign(total, 0);
   make_rows(n);
   transfer_history(p, total);
+  skin_ = skin;
+  index_.adopt(std::move(small_grid), std::move(large_grid), !large_set.empty(), r_ref, r_max, n);
 }
 
 void NeighborList::transfer_history(const ParticleStore& p, std::size_t total) {
@@ -206,33 +189,28 @@ void NeighborList::transfer_history(const ParticleStore& p, std::size_t total) {
     if (!touching[k]) history[k] = ContactHistory{};
 }
 
-std::vector<std::uint32_t> NeighborList::apply_replacement(
-    const ParticleStore& p, const std::vector<std::pair<std::uint64_t, std::uint64_t>>& parent_of) {
+std::vector<std::uint32_t> NeighborList::slots_after_removal(const ParticleStore& p) const {
   const std::size_t n_old = ids_.size(), n = p.size();
-  // old slot -> new slot: compact() keeps the order of the particles it keeps
   std::vector<std::uint32_t> to_new(n_old, none);
   std::size_t q = 0;
   for (std::size_t old = 0; old < n_old; ++old)
     if (q < n && p.id[q] == ids_[old]) to_new[old] = static_cast<std::uint32_t>(q++);
-  const std::size_t n_kept = q;
-  std::unordered_map<std::uint64_t, std::uint64_t> parent;  // fragment id -> parent id
-  for (const auto& [f, par] : parent_of) parent[f] = par;
-  for (std::size_t s = n_kept; s < n; ++s)
-    if (!parent.count(p.id[s])) return {};  // something else was inserted: rebuild
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> kept_partners, children;
-  std::unordered_map<std::uint64_t, std::vector<std::uint64_t>> broken_neighbours;
+  // every kept particle must have been matched: the rest of `p` holds only appended ones, whose
+  // ids (never reused, increasing) are above all ids at the build
+  const std::uint64_t max_id = ids_.empty() ? 0 : *std::max_element(ids_.begin(), ids_.end());
+  for (std::size_t s = q; s < n; ++s)
+    if (p.id[s] <= max_id) return {};
+  return to_new;
+}
+
+void NeighborList::update_in_place(const ParticleStore& p, const std::vector<std::uint32_t>& to_new,
+                                   const std::vector<Vec3>& x_build,
+                                   const std::vector<double>& r_build) {
+  const std::size_t n = p.size();
   std::size_t w = 0;
   for (std::size_t k = 0; k < first.size(); ++k) {
     const std::uint32_t a = to_new[first[k]], b = to_new[second[k]];
-    if (a == none || b == none) {  // a pair of a removed parent
-      if (a == none && b != none) kept_partners[ids_[first[k]]].push_back(b);
-      if (b == none && a != none) kept_partners[ids_[second[k]]].push_back(a);
-      if (a == none && b == none) {
-        broken_neighbours[ids_[first[k]]].push_back(ids_[second[k]]);
-        broken_neighbours[ids_[second[k]]].push_back(ids_[first[k]]);
-      }
-      continue;
-    }
+    if (a == none || b == none) continue;  // a pair of a removed particle
     first[w] = a;
     second[w] = b;
     history[w] = history[k];
@@ -243,32 +221,40 @@ std::vector<std::uint32_t> NeighborList::apply_replacement(
   second.resize(w);
   history.resize(w);
   touching.resize(w);
-  for (std::size_t s = n_kept; s < n; ++s)
-    children[parent[p.id[s]]].push_back(static_cast<std::uint32_t>(s));
-  // rows of the fragments (the highest slots) follow the kept rows: grouping by owner holds
+  index_.remap(to_new);
+  const std::size_t n_kept = static_cast<std::size_t>(
+      std::count_if(to_new.begin(), to_new.end(), [](std::uint32_t s) { return s != none; }));
+  // rows of the appended particles (the highest slots) follow the kept rows: grouping by owner
+  // holds; each row sorted, so the list does not depend on the index's layout
+  std::vector<std::uint32_t> row;
   for (std::size_t s = n_kept; s < n; ++s) {
     const auto fs = static_cast<std::uint32_t>(s);
-    const std::uint64_t par = parent[p.id[s]];
-    auto add = [&](std::uint32_t j) {
+    row.clear();
+    index_.visit_near(x_build[s], r_build[s], skin_, [&](std::uint32_t j) {
+      const double cut = r_build[s] + r_build[j] + skin_;
+      if (norm2(x_build[s] - x_build[j]) < cut * cut) row.push_back(j);
+    });
+    std::sort(row.begin(), row.end());
+    for (std::uint32_t j : row) {
       first.push_back(fs);
       second.push_back(j);
       history.push_back({});
       touching.push_back(0);
-    };
-    for (auto j : kept_partners[par]) add(j);
-    for (auto g : children[par])
-      if (g < fs) add(g);
-    for (auto other : broken_neighbours[par])
-      for (auto g : children[other])
-        if (g < fs) add(g);
+    }
+    index_.insert(fs, x_build[s], r_build[s]);
   }
   std::vector<std::uint8_t> large(n, 0);
-  for (std::size_t old = 0; old < n_old; ++old)
+  for (std::size_t old = 0; old < to_new.size(); ++old)
     if (to_new[old] != none) large[to_new[old]] = large_[old];
   large_ = std::move(large);
   ids_ = p.id;
   make_rows(n);
-  return to_new;
+}
+
+void NeighborList::rebuild_index(const std::vector<Vec3>& x_build,
+                                 const std::vector<double>& r_build, double skin) {
+  skin_ = skin;
+  index_.build(x_build, r_build, skin);
 }
 
 std::vector<std::size_t> NeighborList::cell_order(const ParticleStore& p, double cell) {
@@ -290,6 +276,7 @@ void NeighborList::restore(std::vector<std::uint32_t> f, std::vector<std::uint32
   ids_ = std::move(ids);
   large_ = std::move(large);
   make_rows(ids_.size());
+  index_.clear();
 }
 
 }  // namespace comminute

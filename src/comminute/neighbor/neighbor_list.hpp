@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "comminute/contact/contact_law.hpp"
+#include "comminute/neighbor/reach_index.hpp"
 #include "comminute/particles/particle_store.hpp"
 
 namespace comminute {
@@ -29,15 +30,20 @@ class NeighborList {
   // Builds the list for the current positions and moves the history of touching pairs over from
   // the previous list, matched by particle ids.
   void build(const ParticleStore& p, double skin);
-  // Updates the list after particles were replaced without a rebuild: `p` is the store after
-  // compact() removed the parents and the fragments were appended at its end; parent_of lists
-  // (fragment id, parent id). Pairs of kept particles are kept (slots remapped, history kept);
-  // each fragment gets as candidates its parent's candidates and the fragments of its parent and
-  // of the parent's broken neighbours (fragments lie inside their parent). Returns the new slot
-  // of each old slot (none = removed), or an empty vector when the update is not possible.
-  std::vector<std::uint32_t> apply_replacement(
-      const ParticleStore& p,
-      const std::vector<std::pair<std::uint64_t, std::uint64_t>>& parent_of);
+  // In-place update after compact() removed particles (keeping the order of the others) and new
+  // ones were appended, without a rebuild. slots_after_removal(): old slot -> new slot (none =
+  // removed), empty when `p` does not start with the list's kept particles in order.
+  std::vector<std::uint32_t> slots_after_removal(const ParticleStore& p) const;
+  // Drops the pairs of removed particles, remaps slots (histories kept) and gives each appended
+  // particle s every partner j whose reach sphere at build lies within skin of its own:
+  // |x_build[s] - x_build[j]| < r_build[s] + r_build[j] + skin (arrays by new slot; an appended
+  // particle's reach sphere is chosen by the caller, e.g. its final radius).
+  void update_in_place(const ParticleStore& p, const std::vector<std::uint32_t>& to_new,
+                       const std::vector<Vec3>& x_build, const std::vector<double>& r_build);
+  bool can_update_in_place() const { return index_.valid(); }
+  // Re-creates the spatial index of the reach spheres after restore() (checkpoints).
+  void rebuild_index(const std::vector<Vec3>& x_build, const std::vector<double>& r_build,
+                     double skin);
   static constexpr std::uint32_t none = 0xFFFFFFFFu;
   // Slot order that sorts particles by grid cell (memory locality); cell edge = `cell`.
   static std::vector<std::size_t> cell_order(const ParticleStore& p, double cell);
@@ -55,6 +61,8 @@ class NeighborList {
   std::vector<std::uint64_t> ids_;   // p.id at build
   std::vector<std::uint8_t> large_;  // 1 for particles in the large-particle grid
   std::vector<std::uint32_t> row_;   // CSR offsets of rows by owner slot (size n+1)
+  ReachIndex index_;                 // reach spheres at build, for in-place updates
+  double skin_ = 0;                  // m, of the last build
   // scratch reused between builds
   void transfer_history(const ParticleStore& p, std::size_t total);
   struct SavedIds {

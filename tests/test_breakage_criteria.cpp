@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "breakage_test_params.hpp"
+#include "comminute/breakage/criteria/composition_peak_force.hpp"
 #include "comminute/breakage/criteria/damage.hpp"
 #include "comminute/breakage/criteria/fracture_energy.hpp"
 #include "comminute/breakage/criteria/peak_force.hpp"

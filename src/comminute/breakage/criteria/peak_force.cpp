@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <limits>
-#include <string>
 
 namespace comminute::breakage {
 
@@ -39,47 +38,22 @@ double PeakForce::probability(double d, const StressingEvent& e) const {
   return 0.5 * std::erfc(-std::log(e.peak_force / f) / (factor_sigma_ * std::sqrt(2.0)));
 }
 
-void CompositionPeakForce::attach(ParticleStore& p) {
-  PeakForce::attach(p);
-  composition_.clear();
-  for (std::size_t k = 0; k < relative_strength_.size(); ++k)
-    composition_.push_back(p.add_field("composition." + std::to_string(k), k == 0 ? 1.0 : 0.0));
-}
-
-double CompositionPeakForce::critical_force(const ParticleStore& p, std::size_t i, double d) const {
-  double s = 0;  // seed 000 eq. 2: sum_k C_k f_rel,k
-  for (std::size_t k = 0; k < composition_.size(); ++k)
-    s += p.field(composition_[k])[i] * relative_strength_[k];
-  return law_(d) * s;
-}
-
-double CompositionPeakForce::nominal_critical_force(double d) const {
-  return law_(d) * relative_strength_[0];  // default composition: all phase 0
-}
-
-namespace {
-CriticalForceLaw read_law(const ParameterSource& s) {
+CriticalForceLaw read_critical_force_law(const ParameterSource& s) {
   const double inf = std::numeric_limits<double>::infinity();
   return {s.number("a", 0, inf, false, ParameterSource::required),
           s.number("b", -inf, inf, false, ParameterSource::required),
           s.number("c", -inf, inf, false, 0.0)};
 }
-double read_sigma(const ParameterSource& s) {
+
+double read_factor_sigma(const ParameterSource& s) {
   return s.number("factor_sigma", 0, std::numeric_limits<double>::infinity(), false, 0.0);
 }
+
+namespace {
 std::unique_ptr<BreakageCriterion> make_peak(const ParameterSource& s, const Material&) {
-  return std::make_unique<PeakForce>(read_law(s), read_sigma(s));
-}
-std::unique_ptr<BreakageCriterion> make_composition(const ParameterSource& s, const Material&) {
-  auto law = read_law(s);
-  auto sigma = read_sigma(s);
-  auto f_rel = s.numbers("relative_strength", 0, std::numeric_limits<double>::infinity());
-  if (f_rel.empty()) s.fail("relative_strength", "needs one value per phase");
-  return std::make_unique<CompositionPeakForce>(law, sigma, f_rel);
+  return std::make_unique<PeakForce>(read_critical_force_law(s), read_factor_sigma(s));
 }
 const bool registered_peak = CriterionRegistry::add("peak_force", &make_peak);
-const bool registered_composition =
-    CriterionRegistry::add("composition_peak_force", &make_composition);
 }  // namespace
 
 }  // namespace comminute::breakage

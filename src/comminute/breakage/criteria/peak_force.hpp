@@ -3,9 +3,8 @@
 // A particle breaks when the peak of the sum of elastic normal contact forces on it within one
 // stressing event reaches F_crit(d) times its own random strength factor (lognormal with median
 // 1 and log-standard-deviation `factor_sigma`; 0 = deterministic). The force is not time-filtered.
-#include <vector>
-
 #include "comminute/breakage/criteria/breakage_criterion.hpp"
+#include "comminute/breakage/criteria/parameter_source.hpp"
 
 namespace comminute::breakage {
 
@@ -40,24 +39,8 @@ class PeakForce : public BreakageCriterion {
   std::size_t factor_ = 0;
 };
 
-// Composition-dependent peak force (seed 000 eq. 2-3): F_crit(x, C) = sum_k F_CS(x) C_k f_rel,k,
-// with the particle's composition vector in fields "composition.0", "composition.1", ... (phase 0
-// defaults to 1, the others to 0; fragments inherit the parent's composition).
-class CompositionPeakForce final : public PeakForce {
- public:
-  CompositionPeakForce(const CriticalForceLaw& law, double factor_sigma,
-                       std::vector<double> relative_strength)
-      : PeakForce(law, factor_sigma), relative_strength_(std::move(relative_strength)) {}
-  std::string name() const override { return "composition_peak_force"; }
-  void attach(ParticleStore& p) override;
-
- protected:
-  double critical_force(const ParticleStore& p, std::size_t i, double d) const override;
-  double nominal_critical_force(double d) const override;
-
- private:
-  std::vector<double> relative_strength_;  // f_rel,k = sigma_k / sigma_ref per phase
-  std::vector<std::size_t> composition_;   // field indices
-};
+// Case-file parameters shared by the peak-force family: a, b, c of F_CS and factor_sigma.
+CriticalForceLaw read_critical_force_law(const ParameterSource& s);
+double read_factor_sigma(const ParameterSource& s);
 
 }  // namespace comminute::breakage

@@ -1,0 +1,31 @@
+#pragma once
+// Composition-dependent peak force (Cleary & Sinnott 2015; seed 000 eq. 2-3, MODELS.md
+// "Peak-force criteria"): the peak-force criterion with a critical force weighted by the
+// particle's composition.
+#include <vector>
+
+#include "comminute/breakage/criteria/peak_force.hpp"
+
+namespace comminute::breakage {
+
+// Composition-dependent peak force (seed 000 eq. 2-3): F_crit(x, C) = sum_k F_CS(x) C_k f_rel,k,
+// with the particle's composition vector in fields "composition.0", "composition.1", ... (phase 0
+// defaults to 1, the others to 0; fragments inherit the parent's composition).
+class CompositionPeakForce final : public PeakForce {
+ public:
+  CompositionPeakForce(const CriticalForceLaw& law, double factor_sigma,
+                       std::vector<double> relative_strength)
+      : PeakForce(law, factor_sigma), relative_strength_(std::move(relative_strength)) {}
+  std::string name() const override { return "composition_peak_force"; }
+  void attach(ParticleStore& p) override;
+
+ protected:
+  double critical_force(const ParticleStore& p, std::size_t i, double d) const override;
+  double nominal_critical_force(double d) const override;
+
+ private:
+  std::vector<double> relative_strength_;  // f_rel,k = sigma_k / sigma_ref per phase
+  std::vector<std::size_t> composition_;   // field indices
+};
+
+}  // namespace comminute::breakage

@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "comminute/breakage/criteria/fracture_energy.hpp"
 #include "comminute/core/atomic_file.hpp"
 #include "comminute/core/error.hpp"
+#include "comminute/core/parallel.hpp"
 #include "comminute/core/units.hpp"
 #include "comminute/engine/simulation.hpp"
 
@@ -120,21 +122,24 @@ void BreakageModule::grow(Simulation& sim) {
   for (std::size_t i = 0; i < n; ++i)
     if (p.flags[i] & pflag::growing) limit[i] = target[i];
   const auto& nl = sim.pairs();
-  for (std::size_t k = 0; k < nl.size(); ++k) {
-    const std::uint32_t i = nl.first[k], j = nl.second[k];
-    const bool gi = p.flags[i] & pflag::growing, gj = p.flags[j] & pflag::growing;
-    if (!gi && !gj) continue;
-    if (gi && gj) {  // two growing spheres share the room up to the allowed overlap
-      const double room = norm(p.x[i] - p.x[j]) - p.radius[i] - p.radius[j] +
-                          eps * std::min(p.radius[i], p.radius[j]);
-      limit[i] = std::min(limit[i], p.radius[i] + 0.5 * room);
-      limit[j] = std::min(limit[j], p.radius[j] + 0.5 * room);
-    } else if (gi) {
-      limit[i] = radius_allowed(p.x[i], limit[i], {p.x[j], p.radius[j]}, eps);
-    } else {
-      limit[j] = radius_allowed(p.x[j], limit[j], {p.x[i], p.radius[i]}, eps);
-    }
-  }
+  parallel_scatter(
+      nl.size(), limit, std::numeric_limits<double>::infinity(),
+      [&](std::size_t k, std::vector<double>& lim) {
+        const std::uint32_t i = nl.first[k], j = nl.second[k];
+        const bool gi = p.flags[i] & pflag::growing, gj = p.flags[j] & pflag::growing;
+        if (!gi && !gj) return;
+        if (gi && gj) {  // two growing spheres share the room up to the allowed overlap
+          const double room = norm(p.x[i] - p.x[j]) - p.radius[i] - p.radius[j] +
+                              eps * std::min(p.radius[i], p.radius[j]);
+          lim[i] = std::min(lim[i], p.radius[i] + 0.5 * room);
+          lim[j] = std::min(lim[j], p.radius[j] + 0.5 * room);
+        } else if (gi) {
+          lim[i] = std::min(lim[i], radius_allowed(p.x[i], target[i], {p.x[j], p.radius[j]}, eps));
+        } else {
+          lim[j] = std::min(lim[j], radius_allowed(p.x[j], target[j], {p.x[i], p.radius[i]}, eps));
+        }
+      },
+      [](double a, double b) { return std::min(a, b); });
   std::vector<WallContact> found;
   bool rebuild = false;
   std::vector<std::uint8_t> was_growing(n, 0);
@@ -168,19 +173,23 @@ void BreakageModule::grow(Simulation& sim) {
   }
   // Growth at fixed positions raises the overlaps of the growing spheres: that elastic energy
   // comes from nowhere, so it is booked (as negative removed energy) to keep the balance closed.
-  double created = 0;
-  for (std::size_t k = 0; k < nl.size(); ++k) {
-    const std::uint32_t i = nl.first[k], j = nl.second[k];
-    if (p.radius[i] == r_before[i] && p.radius[j] == r_before[j]) continue;  // nothing grew
-    const double dist = norm(p.x[i] - p.x[j]);
-    const double before = r_before[i] + r_before[j] - dist,
-                 after = p.radius[i] + p.radius[j] - dist;
-    if (after <= 0) continue;
-    created += overlap_energy(sim, after, p.radius[i], p.mass[i], p.material[i], p.radius[j],
-                              p.mass[j], p.material[j]) -
-               overlap_energy(sim, before, r_before[i], p.mass[i], p.material[i], r_before[j],
-                              p.mass[j], p.material[j]);
-  }
+  std::vector<double> pair_energy(1, 0.0);  // J, summed per thread
+  parallel_scatter(
+      nl.size(), pair_energy, 0.0,
+      [&](std::size_t k, std::vector<double>& sum) {
+        const std::uint32_t i = nl.first[k], j = nl.second[k];
+        if (p.radius[i] == r_before[i] && p.radius[j] == r_before[j]) return;  // nothing grew
+        const double dist = norm(p.x[i] - p.x[j]);
+        const double before = r_before[i] + r_before[j] - dist,
+                     after = p.radius[i] + p.radius[j] - dist;
+        if (after <= 0) return;
+        sum[0] += overlap_energy(sim, after, p.radius[i], p.mass[i], p.material[i], p.radius[j],
+                                 p.mass[j], p.material[j]) -
+                  overlap_energy(sim, before, r_before[i], p.mass[i], p.material[i], r_before[j],
+                                 p.mass[j], p.material[j]);
+      },
+      [](double a, double b) { return a + b; });
+  double created = pair_energy[0];
   for (std::size_t i = 0; i < n; ++i) {
     if (!was_growing[i] || p.radius[i] == r_before[i]) continue;
     for (const auto& w : sim.walls) {
@@ -210,23 +219,27 @@ void BreakageModule::post_force(Simulation& sim) {
 void BreakageModule::update_events(Simulation& sim) {
   auto& p = sim.particles;
   const std::size_t n = p.size();
-  load_.assign(n, 0.0);
-  force_.assign(n, 0.0);
+  contact_load_.assign(n, ContactLoad{});
   const auto& nl = sim.pairs();
-  for (std::size_t k = 0; k < nl.size(); ++k) {
-    if (!nl.touching[k]) continue;
-    const std::uint32_t i = nl.first[k], j = nl.second[k];
-    const ContactHistory& h = nl.history[k];
-    const std::size_t a = p.material[i], b = p.material[j];
-    load_[i] += share_[a * n_materials_ + b] * h.loading_work;
-    load_[j] += share_[b * n_materials_ + a] * h.loading_work;
-    force_[i] += h.normal_force;
-    force_[j] += h.normal_force;
-  }
+  parallel_scatter(
+      nl.size(), contact_load_, ContactLoad{},
+      [&](std::size_t k, std::vector<ContactLoad>& acc) {
+        if (!nl.touching[k]) return;
+        const std::uint32_t i = nl.first[k], j = nl.second[k];
+        const ContactHistory& h = nl.history[k];
+        const std::size_t a = p.material[i], b = p.material[j];
+        acc[i].work += share_[a * n_materials_ + b] * h.loading_work;
+        acc[j].work += share_[b * n_materials_ + a] * h.loading_work;
+        acc[i].force += h.normal_force;
+        acc[j].force += h.normal_force;
+      },
+      [](ContactLoad x, const ContactLoad& y) {
+        return ContactLoad{x.work + y.work, x.force + y.force};
+      });
   for (const auto& c : sim.wall_contacts()) {
     const std::size_t a = p.material[c.particle], b = sim.walls[c.wall]->material;
-    load_[c.particle] += share_[a * n_materials_ + b] * c.history.loading_work;
-    force_[c.particle] += c.history.normal_force;
+    contact_load_[c.particle].work += share_[a * n_materials_ + b] * c.history.loading_work;
+    contact_load_[c.particle].force += c.history.normal_force;
   }
   auto& in_event = p.field(f_in_event_);
   auto& energy = p.field(f_energy_);
@@ -242,7 +255,7 @@ void BreakageModule::update_events(Simulation& sim) {
     // A growing fragment already carries its full mass and transmits real contact forces: it is
     // assessed at its final size (the overlaps growth creates are capped, see grow()).
     const double d = 2 * std::max(p.radius[i], target[i]);
-    const double s = load_[i] / p.mass[i];  // J/kg
+    const double s = contact_load_[i].work / p.mass[i];  // J/kg
     if (d < mat->min_breakable_size) {
       baseline[i] = s;
       continue;
@@ -291,7 +304,7 @@ void BreakageModule::update_events(Simulation& sim) {
     } else {
       quiet[i] += 1;
     }
-    force[i] = std::max(force[i], force_[i]);
+    force[i] = std::max(force[i], contact_load_[i].force);
     const StressingEvent ev{energy[i], force[i]};
     if (crit.breaks(p, i, d, ev)) {
       EventRecord r = record();

@@ -131,7 +131,11 @@ class BreakageModule final : public Module {
   // field indices
   std::size_t f_init_ = 0, f_generation_ = 0, f_target_ = 0, f_in_event_ = 0, f_energy_ = 0,
               f_force_ = 0, f_baseline_ = 0, f_quiet_ = 0;
-  std::vector<double> load_, force_;          // per slot, scratch
+  struct ContactLoad {
+    double work = 0;   // J, share of the contacts' loading work
+    double force = 0;  // N, sum of the elastic normal contact forces
+  };
+  std::vector<ContactLoad> contact_load_;     // per slot, scratch
   std::vector<NewFragment> fragments_added_;  // appended this step
   std::vector<std::uint64_t> broken_ids_;     // found in post_force
   std::vector<EventRecord> broken_records_;

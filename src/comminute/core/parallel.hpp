@@ -2,6 +2,9 @@
 // Thread helpers. OpenMP is used with static schedules only, so that a run with the same thread
 // count is bit-for-bit reproducible (needed for checkpoint/restart).
 #include <omp.h>
+
+#include <cstddef>
+#include <vector>
 #if defined(__SSE__)
 #include <xmmintrin.h>
 #endif
@@ -22,5 +25,34 @@ inline void flush_denormals_to_zero() {
 #pragma omp parallel
   _mm_setcsr(_mm_getcsr() | 0x8040);  // FTZ | DAZ
 #endif
+}
+
+// A loop over [0, n) whose body scatters into an array (a pair loop writing both particles):
+// body(k, acc) updates acc, which is `out` itself for the first thread and a copy filled with
+// `identity` for each other one; the copies are then folded into `out` with combine(a, b) in
+// thread order, so the same thread count always gives the same result. Small loops run serially.
+template <class T, class Body, class Combine>
+void parallel_scatter(std::size_t n, std::vector<T>& out, const T& identity, Body&& body,
+                      Combine&& combine) {
+  const int nt = n >= 8192 ? max_threads() : 1;
+  if (nt == 1) {
+    for (std::size_t k = 0; k < n; ++k) body(k, out);
+    return;
+  }
+  std::vector<std::vector<T>> copies(static_cast<std::size_t>(nt - 1),
+                                     std::vector<T>(out.size(), identity));
+#pragma omp parallel num_threads(nt)
+  {
+    const int t = thread_id();
+    std::vector<T>& acc = t == 0 ? out : copies[static_cast<std::size_t>(t - 1)];
+    const std::size_t k1 = n * static_cast<std::size_t>(t + 1) / static_cast<std::size_t>(nt);
+    for (std::size_t k = n * static_cast<std::size_t>(t) / static_cast<std::size_t>(nt); k < k1;
+         ++k)
+      body(k, acc);
+  }
+  const std::size_t m = out.size();
+#pragma omp parallel for schedule(static) num_threads(nt) if (m >= 4096)
+  for (std::size_t i = 0; i < m; ++i)
+    for (const auto& c : copies) out[i] = combine(out[i], c[i]);
 }
 }  // namespace comminute

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "comminute/core/error.hpp"
+#include "comminute/core/math_policy.hpp"
 
 namespace comminute::breakage {
 
@@ -23,8 +24,8 @@ double FractureEnergyDistribution::cdf(double e) const {
 
 double FractureEnergyDistribution::quantile(double u) const {
   // Inversion (MODELS.md): ln E* = ln E50 + sqrt2 sigma erf^-1(2u - 1); E = E* Emax/(Emax + E*).
-  const double e_star =
-      e50_ * std::exp(std::sqrt(2.0) * sigma_ * boost::math::erf_inv(2.0 * u - 1.0));
+  const double e_star = e50_ * std::exp(std::sqrt(2.0) * sigma_ *
+                                        boost::math::erf_inv(2.0 * u - 1.0, DoublePrecision()));
   return std::isinf(emax_) ? e_star : e_star * emax_ / (emax_ + e_star);
 }
 

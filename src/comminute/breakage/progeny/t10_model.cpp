@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "comminute/core/error.hpp"
+#include "comminute/core/math_policy.hpp"
 
 namespace comminute::breakage {
 
@@ -22,7 +23,8 @@ std::array<double, 5> T10Model::tn(double t10) const {
   std::array<double, 5> out{};
   const double x = std::clamp(t10 / 100.0, 0.0, 1.0);
   for (std::size_t k = 0; k < 5; ++k)
-    out[k] = 100.0 * boost::math::ibeta(p_.alpha[k], p_.beta[k], x);  // seed 002 eq. 17
+    out[k] = 100.0 *
+             boost::math::ibeta(p_.alpha[k], p_.beta[k], x, DoublePrecision());  // seed 002 eq. 17
   return out;
 }
 

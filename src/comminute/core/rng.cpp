@@ -3,6 +3,8 @@
 #include <boost/math/special_functions/erf.hpp>
 #include <cmath>
 
+#include "comminute/core/math_policy.hpp"
+
 namespace comminute {
 
 namespace {
@@ -40,7 +42,7 @@ double Rng::uniform() {
 
 double Rng::normal() {
   // Phi^-1(u) = -sqrt(2) erfc^-1(2u)
-  return -std::sqrt(2.0) * boost::math::erfc_inv(2.0 * uniform());
+  return -std::sqrt(2.0) * boost::math::erfc_inv(2.0 * uniform(), DoublePrecision());
 }
 
 std::uint64_t Rng::below(std::uint64_t n) {

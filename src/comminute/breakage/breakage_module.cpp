@@ -140,39 +140,59 @@ void BreakageModule::grow(Simulation& sim) {
         }
       },
       [](double a, double b) { return std::min(a, b); });
-  std::vector<WallContact> found;
-  bool rebuild = false;
-  std::vector<std::uint8_t> was_growing(n, 0);
-  for (std::size_t i = 0; i < n; ++i) was_growing[i] = (p.flags[i] & pflag::growing) ? 1 : 0;
-  std::vector<double> r_before = p.radius;
-  for (std::size_t i = 0; i < n; ++i) {
-    // blocked by a neighbour already: no growth this step (spares the wall look-ups)
-    if (!(p.flags[i] & pflag::growing) || limit[i] <= p.radius[i]) continue;
-    for (const auto& w : sim.walls) {
-      found.clear();
-      w->contacts(p.x[i], p.radius[i], target[i], found);
-      for (const auto& c : found)  // distance to the wall = r - overlap; keep overlap <= eps r
-        limit[i] = std::min(limit[i], (p.radius[i] - c.overlap) / (1.0 - eps));
-    }
-    double r_new = std::min(
-        {target[i], p.radius[i] + opt_.growth_step * target[i], std::max(p.radius[i], limit[i])});
-    // the pair list covers unlisted spheres only up to the reach margin: grow within it, and have
-    // the list rebuilt once it is used up
-    const double margin = std::max(0.0, sim.reach_margin(i));
-    if (r_new - p.radius[i] >= margin) {
-      r_new = p.radius[i] + margin;
-      rebuild = true;
-    }
-    p.radius[i] = r_new;
-    if (r_new >= target[i]) {
-      p.radius[i] = target[i];
-      p.flags[i] &= ~pflag::growing;
-      p.field(f_target_)[i] = 0;
-      --pending_;
-    }
-  }
+  const std::vector<double> r_before = p.radius;
   // Growth at fixed positions raises the overlaps of the growing spheres: that elastic energy
   // comes from nowhere, so it is booked (as negative removed energy) to keep the balance closed.
+  struct GrowthTally {
+    double wall_energy = 0;     // J, created in wall contacts
+    std::size_t completed = 0;  // fragments that reached full size
+    bool rebuild = false;       // some fragment used up its reach margin
+  };
+  std::vector<GrowthTally> tally(1);
+  parallel_scatter(
+      n, tally, GrowthTally{},
+      [&](std::size_t i, std::vector<GrowthTally>& acc) {
+        // blocked by a neighbour already: no growth this step (spares the wall look-ups)
+        if (!(p.flags[i] & pflag::growing) || limit[i] <= p.radius[i]) return;
+        thread_local std::vector<WallContact> found;
+        for (const auto& w : sim.walls) {
+          found.clear();
+          w->contacts(p.x[i], p.radius[i], target[i], found);
+          for (const auto& c : found)  // distance to the wall = r - overlap; keep overlap <= eps r
+            limit[i] = std::min(limit[i], (p.radius[i] - c.overlap) / (1.0 - eps));
+        }
+        double r_new = std::min({target[i], p.radius[i] + opt_.growth_step * target[i],
+                                 std::max(p.radius[i], limit[i])});
+        // the pair list covers unlisted spheres only up to the reach margin: grow within it,
+        // and have the list rebuilt once it is used up
+        const double margin = std::max(0.0, sim.reach_margin(i));
+        if (r_new - p.radius[i] >= margin) {
+          r_new = p.radius[i] + margin;
+          acc[0].rebuild = true;
+        }
+        if (r_new >= target[i]) {
+          r_new = target[i];
+          p.flags[i] &= ~pflag::growing;
+          p.field(f_target_)[i] = 0;
+          ++acc[0].completed;
+        }
+        p.radius[i] = r_new;
+        if (r_new == r_before[i]) return;
+        for (const auto& w : sim.walls) {
+          found.clear();
+          w->contacts(p.x[i], r_new, 0.0, found);
+          for (const auto& c : found)
+            acc[0].wall_energy +=
+                overlap_energy(sim, c.overlap, r_new, p.mass[i], p.material[i], 0, 0, w->material) -
+                overlap_energy(sim, c.overlap - (r_new - r_before[i]), r_before[i], p.mass[i],
+                               p.material[i], 0, 0, w->material);
+        }
+      },
+      [](GrowthTally a, const GrowthTally& b) {
+        return GrowthTally{a.wall_energy + b.wall_energy, a.completed + b.completed,
+                           a.rebuild || b.rebuild};
+      });
+  pending_ -= tally[0].completed;
   std::vector<double> pair_energy(1, 0.0);  // J, summed per thread
   parallel_scatter(
       nl.size(), pair_energy, 0.0,
@@ -189,21 +209,8 @@ void BreakageModule::grow(Simulation& sim) {
                                  p.mass[j], p.material[j]);
       },
       [](double a, double b) { return a + b; });
-  double created = pair_energy[0];
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!was_growing[i] || p.radius[i] == r_before[i]) continue;
-    for (const auto& w : sim.walls) {
-      found.clear();
-      w->contacts(p.x[i], p.radius[i], 0.0, found);
-      for (const auto& c : found)
-        created += overlap_energy(sim, c.overlap, p.radius[i], p.mass[i], p.material[i], 0, 0,
-                                  w->material) -
-                   overlap_energy(sim, c.overlap - (p.radius[i] - r_before[i]), r_before[i],
-                                  p.mass[i], p.material[i], 0, 0, w->material);
-    }
-  }
-  add_energy(sim, created);
-  if (rebuild) sim.particles_changed();
+  add_energy(sim, pair_energy[0] + tally[0].wall_energy);
+  if (tally[0].rebuild) sim.particles_changed();
 }
 
 void BreakageModule::pre_force(Simulation& sim) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include "breakage_engine_fixture.hpp"
 #include "comminute/core/parallel.hpp"
 #include "comminute/core/rng.hpp"
 #include "comminute/geometry/box_wall.hpp"
@@ -113,4 +114,43 @@ TEST(Parallel, ScatterMatchesTheSerialLoop) {
   EXPECT_EQ(m1, m2);
   EXPECT_EQ(s2, s2b);
   for (std::size_t i = 0; i < slots; ++i) EXPECT_NEAR(s1[i], s2[i], 1e-12);
+}
+
+// Breakage on two threads: a pre-stressed lattice of 9261 weak particles squeezed by a platen
+// (the benchmark's bed, small), so that the module's threaded loops (contact loads, growth) and
+// in-place fragment insertion all run; the same thread count must repeat bit for bit. Also run
+// under ThreadSanitizer by scripts/test.
+TEST(Parallel, BreakageRepeatsBitForBitOnTwoThreads) {
+  auto run = [] {
+    omp_set_num_threads(2);
+    DemSetup s;
+    s.youngs = 5e7;
+    auto sim = make_simulation(s);
+    Rng rng(11);
+    const double d = 0.003, a = 0.995 * d, L = 21 * a;
+    lattice(*sim, d, a, L, 1.0, rng);
+    sim->walls.push_back(
+        std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{L, L, 2 * L},
+                                  std::array<bool, 6>{false, false, false, false, false, true}));
+    auto platen = std::make_unique<PlaneWall>(Vec3{0, 0, L}, Vec3{0, 0, -1});
+    platen->kinematics.velocity = {0, 0, -1.0};
+    sim->walls.push_back(std::move(platen));
+    std::vector<std::optional<breakage::MaterialBreakage>> mats;
+    mats.emplace_back(weak_material(0.1, 0.5, 0.0015, 0.3, breakage::FinesRule::mass, 0.0));
+    auto mod =
+        std::make_unique<breakage::BreakageModule>(std::move(mats), breakage::BreakageOptions{});
+    breakage::BreakageModule* m = mod.get();
+    sim->modules.push_back(std::move(mod));
+    sim->dt = 0.2 * M_PI * 0.00045 * std::sqrt(2500 / (5e7 / 2.6)) / (0.1631 * 0.3 + 0.8766);
+    sim->setup();
+    sim->run(40);
+    return std::make_pair(m->breakages(), sim->particles.x);
+  };
+  const int saved = omp_get_max_threads();
+  const auto first = run();
+  const auto second = run();
+  omp_set_num_threads(saved);
+  EXPECT_GT(first.first, 100u);
+  EXPECT_EQ(first.first, second.first);
+  EXPECT_EQ(first.second, second.second);
 }

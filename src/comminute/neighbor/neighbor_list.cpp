@@ -207,20 +207,46 @@ void NeighborList::update_in_place(const ParticleStore& p, const std::vector<std
                                    const std::vector<Vec3>& x_build,
                                    const std::vector<double>& r_build) {
   const std::size_t n = p.size();
-  std::size_t w = 0;
-  for (std::size_t k = 0; k < first.size(); ++k) {
-    const std::uint32_t a = to_new[first[k]], b = to_new[second[k]];
-    if (a == none || b == none) continue;  // a pair of a removed particle
-    first[w] = a;
-    second[w] = b;
-    history[w] = history[k];
-    touching[w] = touching[k];
-    ++w;
+  // keep the pairs of kept particles (slots remapped, order kept): each thread counts its share
+  // of the list, then copies it to its offset in spare arrays, which are swapped in
+  const std::size_t m = first.size();
+  const int nt = m >= 16384 ? max_threads() : 1;
+  std::vector<std::size_t> kept(static_cast<std::size_t>(nt) + 1, 0);
+  auto range = [m, nt](int t) {
+    return std::make_pair(m * static_cast<std::size_t>(t) / static_cast<std::size_t>(nt),
+                          m * static_cast<std::size_t>(t + 1) / static_cast<std::size_t>(nt));
+  };
+  auto keeps = [&](std::size_t k) { return to_new[first[k]] != none && to_new[second[k]] != none; };
+#pragma omp parallel num_threads(nt)
+  {
+    const int t = thread_id();
+    const auto [k0, k1] = range(t);
+    std::size_t c = 0;
+    for (std::size_t k = k0; k < k1; ++k) c += keeps(k) ? 1 : 0;
+    kept[static_cast<std::size_t>(t) + 1] = c;
+#pragma omp barrier
+#pragma omp single
+    {
+      for (int u = 0; u < nt; ++u) kept[u + 1] += kept[u];
+      spare_first_.resize(kept[nt]);
+      spare_second_.resize(kept[nt]);
+      spare_history_.resize(kept[nt]);
+      spare_touching_.resize(kept[nt]);
+    }
+    std::size_t w = kept[static_cast<std::size_t>(t)];
+    for (std::size_t k = k0; k < k1; ++k) {
+      if (!keeps(k)) continue;  // a pair of a removed particle
+      spare_first_[w] = to_new[first[k]];
+      spare_second_[w] = to_new[second[k]];
+      spare_history_[w] = history[k];
+      spare_touching_[w] = touching[k];
+      ++w;
+    }
   }
-  first.resize(w);
-  second.resize(w);
-  history.resize(w);
-  touching.resize(w);
+  first.swap(spare_first_);
+  second.swap(spare_second_);
+  history.swap(spare_history_);
+  touching.swap(spare_touching_);
   index_.remap(to_new);
   const std::size_t n_kept = static_cast<std::size_t>(
       std::count_if(to_new.begin(), to_new.end(), [](std::uint32_t s) { return s != none; }));

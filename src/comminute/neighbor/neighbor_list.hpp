@@ -70,6 +70,9 @@ class NeighborList {
   };
   std::vector<SavedIds> saved_;
   std::vector<std::uint32_t> new_position_, order_;
+  std::vector<std::uint32_t> spare_first_, spare_second_;  // in-place updates copy into these
+  std::vector<ContactHistory> spare_history_;
+  std::vector<std::uint8_t> spare_touching_;
   std::vector<std::vector<std::uint32_t>> thread_first_, thread_second_;
   std::vector<std::pair<std::uint64_t, std::uint32_t>> slot_of_id_;
   void make_rows(std::size_t n);

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <functional>
+
 #include "comminute/core/error.hpp"
 #include "comminute/core/units.hpp"
 
@@ -47,18 +49,18 @@ void permute_vector(std::vector<T>& a, const std::vector<std::size_t>& order, st
 std::size_t ParticleStore::compact() {
   const std::size_t before = size();
   const std::vector<std::uint32_t> fl = flags;
-  compact_vector(x, fl);
-  compact_vector(v, fl);
-  compact_vector(w, fl);
-  compact_vector(f, fl);
-  compact_vector(t, fl);
-  compact_vector(radius, fl);
-  compact_vector(mass, fl);
-  compact_vector(inertia, fl);
-  compact_vector(id, fl);
-  compact_vector(material, fl);
-  for (auto& fld : fields_) compact_vector(fld, fl);
-  compact_vector(flags, fl);
+  // one job per array, shared out between the threads (the arrays are independent)
+  std::vector<std::function<void()>> jobs{
+      [&] { compact_vector(x, fl); },    [&] { compact_vector(v, fl); },
+      [&] { compact_vector(w, fl); },    [&] { compact_vector(f, fl); },
+      [&] { compact_vector(t, fl); },    [&] { compact_vector(radius, fl); },
+      [&] { compact_vector(mass, fl); }, [&] { compact_vector(inertia, fl); },
+      [&] { compact_vector(id, fl); },   [&] { compact_vector(material, fl); },
+      [&] { compact_vector(flags, fl); }};
+  for (auto& fld : fields_) jobs.emplace_back([&fld, &fl] { compact_vector(fld, fl); });
+  const auto n_jobs = static_cast<std::ptrdiff_t>(jobs.size());
+#pragma omp parallel for schedule(dynamic) if (before >= 16384)
+  for (std::ptrdiff_t k = 0; k < n_jobs; ++k) jobs[static_cast<std::size_t>(k)]();
   return before - size();
 }
 

@@ -89,21 +89,28 @@ void BreakageModule::initialize_particle(Simulation& sim, std::size_t i) {
 }
 
 namespace {
-// Normal elastic energy (J) of a fresh contact with overlap `overlap` between sphere i and a
-// sphere j (r_j > 0) or a wall (r_j = 0), from the simulation's contact law.
-double overlap_energy(const Simulation& sim, double overlap, double r_i, double m_i,
-                      std::uint16_t a, double r_j, double m_j, std::uint16_t b) {
-  if (overlap <= 0) return 0.0;
+// The contact law evaluated at rest between sphere i (radius, mass, material) and a sphere
+// (r_j > 0) or a wall (r_j = 0) at `overlap` along `normal`, on a copy of the history h: nothing
+// slips or advances. Gives the forces and energies a contact holds in that state.
+ContactForces contact_at_rest(const Simulation& sim, double overlap, double r_i, double m_i,
+                              std::uint16_t a, double r_j, double m_j, std::uint16_t b,
+                              const Vec3& normal = {0, 0, 1}, ContactHistory h = {}) {
   ContactKinematics ck;
-  ck.normal = {0, 0, 1};
+  ck.normal = normal;
   ck.overlap = overlap;
   ck.effective_radius = r_j > 0 ? r_i * r_j / (r_i + r_j) : r_i;
   ck.effective_mass = m_j > 0 ? m_i * m_j / (m_i + m_j) : m_i;
   ck.dt = 0;
-  ContactHistory h;
   ContactForces out;
   sim.law->compute(ck, sim.materials.pair(a, b), h, out);
-  return out.normal_elastic_energy;
+  return out;
+}
+
+// Normal elastic energy (J) of a fresh contact with overlap `overlap` (0 when not touching).
+double overlap_energy(const Simulation& sim, double overlap, double r_i, double m_i,
+                      std::uint16_t a, double r_j, double m_j, std::uint16_t b) {
+  if (overlap <= 0) return 0.0;
+  return contact_at_rest(sim, overlap, r_i, m_i, a, r_j, m_j, b).normal_elastic_energy;
 }
 }  // namespace
 
@@ -327,28 +334,6 @@ void BreakageModule::update_events(Simulation& sim) {
   }
 }
 
-namespace {
-// Elastic energy (J) stored now in a contact, evaluated by the contact law on a copy of its
-// history (no tangential slip, no time advance).
-double stored_energy(const Simulation& sim, std::size_t i, double other_radius, double other_mass,
-                     const Vec3& normal, double overlap, std::uint16_t other_material,
-                     const ContactHistory& h) {
-  const auto& p = sim.particles;
-  ContactKinematics ck;
-  ck.normal = normal;
-  ck.overlap = overlap;
-  ck.effective_radius =
-      other_radius > 0 ? p.radius[i] * other_radius / (p.radius[i] + other_radius) : p.radius[i];
-  ck.effective_mass =
-      other_mass > 0 ? p.mass[i] * other_mass / (p.mass[i] + other_mass) : p.mass[i];
-  ck.dt = 0;
-  ContactHistory copy = h;
-  ContactForces out;
-  sim.law->compute(ck, sim.materials.pair(p.material[i], other_material), copy, out);
-  return out.stored_energy;
-}
-}  // namespace
-
 void BreakageModule::end_of_step(Simulation& sim) {
   const bool due = opt_.replacement_interval <= 1 ||
                    sim.step_count % static_cast<std::uint64_t>(opt_.replacement_interval) == 0;
@@ -376,8 +361,10 @@ void BreakageModule::end_of_step(Simulation& sim) {
         const double dist = norm(dx);
         const double ov = p.radius[i] + p.radius[j] - dist;
         if (ov > 0 && dist > 0) {
-          const double u = stored_energy(sim, i, p.radius[j], p.mass[j], dx / dist, ov,
-                                         p.material[j], nl.history[k]);
+          const double u =
+              contact_at_rest(sim, ov, p.radius[i], p.mass[i], p.material[i], p.radius[j],
+                              p.mass[j], p.material[j], dx / dist, nl.history[k])
+                  .stored_energy;
           removed_ += u;
           sim.ledger.removed += u;
         }
@@ -390,8 +377,10 @@ void BreakageModule::end_of_step(Simulation& sim) {
       sim.walls[c.wall]->contacts(p.x[c.particle], p.radius[c.particle], 0.0, found);
       for (const auto& f : found)
         if (f.feature == c.feature && f.overlap > 0) {
-          const double u = stored_energy(sim, c.particle, 0, 0, f.normal, f.overlap,
-                                         sim.walls[c.wall]->material, c.history);
+          const std::uint32_t i = c.particle;
+          const double u = contact_at_rest(sim, f.overlap, p.radius[i], p.mass[i], p.material[i], 0,
+                                           0, sim.walls[c.wall]->material, f.normal, c.history)
+                               .stored_energy;
           removed_ += u;
           sim.ledger.removed += u;
         }

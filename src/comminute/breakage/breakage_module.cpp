@@ -392,6 +392,7 @@ void BreakageModule::end_of_step(Simulation& sim) {
     p.compact();
     sim.particles_replaced(fragments_added_);
     fragments_added_.clear();
+    fragment_slots_.clear();
     broken_ids_.clear();
     broken_records_.clear();
   }
@@ -496,11 +497,20 @@ void BreakageModule::replace(Simulation& sim, std::size_t parent,
     for (std::size_t b = a + 1; b < p.size(); ++b)
       created += overlap_energy(sim, p.radius[a] + p.radius[b] - norm(p.x[a] - p.x[b]), p.radius[a],
                                 p.mass[a], material, p.radius[b], p.mass[b], material);
-    for (std::uint32_t j : around)
-      if (!(p.flags[j] & pflag::remove))
-        created +=
-            overlap_energy(sim, p.radius[a] + p.radius[j] - norm(p.x[a] - p.x[j]), p.radius[a],
-                           p.mass[a], material, p.radius[j], p.mass[j], p.material[j]);
+    auto with = [&](std::size_t j) {
+      created += overlap_energy(sim, p.radius[a] + p.radius[j] - norm(p.x[a] - p.x[j]), p.radius[a],
+                                p.mass[a], material, p.radius[j], p.mass[j], p.material[j]);
+    };
+    for (std::uint32_t j : around) {
+      if (!(p.flags[j] & pflag::remove)) {
+        with(j);
+        continue;
+      }
+      // a neighbour replaced earlier in this step: its fragments are the neighbours now
+      const auto it = fragment_slots_.find(p.id[j]);
+      if (it != fragment_slots_.end())
+        for (std::size_t g = it->second.first; g < it->second.second; ++g) with(g);
+    }
     for (const auto& w : sim.walls) {
       found.clear();
       w->contacts(p.x[a], p.radius[a], 0.0, found);
@@ -510,6 +520,7 @@ void BreakageModule::replace(Simulation& sim, std::size_t parent,
     }
   }
   add_energy(sim, created);
+  fragment_slots_[p.id[parent]] = {first, p.size()};
   if (progeny.fines_mass > 0) {
     fines_mass_[material] += progeny.fines_mass;
     fines_momentum_ += progeny.fines_mass * vp;

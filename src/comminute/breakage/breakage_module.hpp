@@ -18,6 +18,8 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "comminute/breakage/criteria/breakage_criterion.hpp"
@@ -137,7 +139,9 @@ class BreakageModule final : public Module {
   };
   std::vector<ContactLoad> contact_load_;     // per slot, scratch
   std::vector<NewFragment> fragments_added_;  // appended this step
-  std::vector<std::uint64_t> broken_ids_;     // found in post_force
+  // slots [begin, end) of the fragments of each parent replaced this step, by parent id
+  std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t>> fragment_slots_;
+  std::vector<std::uint64_t> broken_ids_;  // found in post_force
   std::vector<EventRecord> broken_records_;
   Rng strength_rng_, placement_rng_;
   std::size_t pending_ = 0;

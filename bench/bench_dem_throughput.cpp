@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <fstream>
 
-#include "comminute/io/dem_case.hpp"
+#include "comminute/io/case/dem_case.hpp"
 
 namespace {
 // Resident set size now (MB), from /proc/self/statm.

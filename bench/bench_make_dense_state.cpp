@@ -8,7 +8,7 @@
 #include <cstdlib>
 
 #include "comminute/core/atomic_file.hpp"
-#include "comminute/io/dem_case.hpp"
+#include "comminute/io/case/dem_case.hpp"
 
 int main(int argc, char** argv) {
   using namespace comminute;

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "comminute/calibrate/multistart.hpp"
-#include "comminute/io/calibration_case.hpp"
+#include "comminute/io/case/calibration_case.hpp"
 #include "comminute/pbm/method_of_classes.hpp"
 #include "comminute/pbm/power_law_rate.hpp"
 #include "comminute/pbm/product_function.hpp"
@@ -100,7 +100,7 @@ void BM_Calibration15Starts6Parameters(benchmark::State& st) {
     text.replace(text.find('"' + f + '"'), f.size() + 2, '"' + (dir / f).string() + '"');
   const auto path = std::filesystem::temp_directory_path() / "comminute_bench_calibration.toml";
   std::ofstream(path) << text;
-  const auto cc = io::read_calibration(io::CaseFile::load(path));
+  const auto cc = io::read_calibration(CaseFile::load(path));
   double best = 0, evals = 0;
   for (auto _ : st) {
     const auto r = calibrate::multistart(cc.space, cc.objective, cc.options);

@@ -5,9 +5,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "comminute/io/breakage_case.hpp"
-#include "comminute/io/dem_case.hpp"
-#include "comminute/io/output_case.hpp"
+#include "comminute/io/case/breakage_case.hpp"
+#include "comminute/io/case/dem_case.hpp"
+#include "comminute/io/case/output_case.hpp"
 
 using namespace comminute;
 
@@ -25,8 +25,8 @@ TEST(BreakageDocs, EveryKeyOfTheBreakageExamplesIsDocumented) {
   ASSERT_FALSE(breakage_doc.empty());
   ASSERT_FALSE(case_doc.empty());
   for (const char* name : {"drop_weight", "slow_compression", "bed_impact", "repeated_impacts"}) {
-    io::CaseFile f = io::CaseFile::load(std::string(COMMINUTE_SOURCE_DIR) + "/examples/breakage/" +
-                                        name + ".toml");
+    CaseFile f =
+        CaseFile::load(std::string(COMMINUTE_SOURCE_DIR) + "/examples/breakage/" + name + ".toml");
     io::DemCase dem = io::build_dem_case(f.root());
     ASSERT_NE(io::add_breakage(f.root(), dem, ""), nullptr) << name;
     f.reject_unknown();

@@ -13,7 +13,7 @@
 
 #include "comminute/calibrate/multistart.hpp"
 #include "comminute/core/rng.hpp"
-#include "comminute/io/calibration_case.hpp"
+#include "comminute/io/case/calibration_case.hpp"
 
 using namespace comminute;
 
@@ -103,7 +103,7 @@ time = 10.0
     f << base << calib;
   }
   // Simulated passing at the truth, plus noise, becomes the measurement.
-  const auto cc = io::read_calibration(io::CaseFile::load(dir / "case.toml"));
+  const auto cc = io::read_calibration(CaseFile::load(dir / "case.toml"));
   const auto fit = cc.fit({t.k, t.alpha, t.q, t.nu});
   Rng rng(99);
   std::ofstream f5(dir / "m2.csv"), f20(dir / "m10.csv");
@@ -118,7 +118,7 @@ time = 10.0
 
 std::vector<double> recover(double noise, const char* name) {
   const auto path = make_case(std::filesystem::temp_directory_path() / name, noise);
-  const auto cc = io::read_calibration(io::CaseFile::load(path));
+  const auto cc = io::read_calibration(CaseFile::load(path));
   const auto r = calibrate::multistart(cc.space, cc.objective, cc.options);
   return r.starts[r.best].best;
 }

@@ -5,8 +5,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "comminute/io/dem_case.hpp"
-#include "comminute/io/output_case.hpp"
+#include "comminute/io/case/dem_case.hpp"
+#include "comminute/io/case/output_case.hpp"
 
 using namespace comminute;
 
@@ -18,7 +18,7 @@ TEST(CaseDocs, EveryKeyOfTheDemExamplesIsDocumented) {
   ASSERT_FALSE(doc.empty());
   for (const char* name : {"/examples/settle/settle.toml", "/examples/drum/rotating_drum.toml",
                            "/examples/piston/confined_compression.toml"}) {
-    io::CaseFile f = io::CaseFile::load(std::string(COMMINUTE_SOURCE_DIR) + name);
+    CaseFile f = CaseFile::load(std::string(COMMINUTE_SOURCE_DIR) + name);
     io::build_dem_case(f.root());
     if (auto o = f.root().optional_table("output")) io::read_output_options(*o);
     f.reject_unknown();

@@ -8,7 +8,7 @@
 
 #include "comminute/core/error.hpp"
 #include "comminute/core/rng.hpp"
-#include "comminute/io/checkpoint.hpp"
+#include "comminute/io/output/checkpoint.hpp"
 #include "temp_dir.hpp"
 
 using namespace comminute;

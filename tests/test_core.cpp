@@ -6,11 +6,31 @@
 #include <fstream>
 
 #include "comminute/core/atomic_file.hpp"
+#include "comminute/core/case_table.hpp"
 #include "comminute/core/error.hpp"
+#include "comminute/core/registry.hpp"
 #include "comminute/core/rng.hpp"
-#include "comminute/io/case_table.hpp"
 
 using namespace comminute;
+
+namespace {
+struct Shape {
+  virtual ~Shape() = default;
+  virtual int sides() const = 0;
+};
+struct Triangle final : Shape {
+  int sides() const override { return 3; }
+};
+using ShapeRegistry = Registry<Shape>;
+}  // namespace
+
+TEST(Registry, RefusesASecondModelUnderATakenName) {
+  ASSERT_TRUE(ShapeRegistry::add("triangle", [] { return std::make_unique<Triangle>(); }));
+  EXPECT_THROW(ShapeRegistry::add("triangle", [] { return std::make_unique<Triangle>(); }),
+               std::logic_error);
+  EXPECT_EQ(ShapeRegistry::create("triangle")->sides(), 3);  // the first stays
+  EXPECT_EQ(ShapeRegistry::create("square"), nullptr);
+}
 
 TEST(Rng, SameSeedSameStreamRepeats) {
   Rng a(42, 1), b(42, 1), c(42, 2);
@@ -73,21 +93,21 @@ TEST(AtomicFile, UncommittedLeavesNothing) {
 }
 
 TEST(CaseTable, ReadsTypedValuesWithDefaults) {
-  auto f = io::CaseFile::parse("[sim]\ndt = 1e-5\nsteps = 10\nname = \"x\"\ng = [0, 0, -9.81]\n");
+  auto f = CaseFile::parse("[sim]\ndt = 1e-5\nsteps = 10\nname = \"x\"\ng = [0, 0, -9.81]\n");
   auto sim = f.root().table("sim");
-  EXPECT_DOUBLE_EQ(sim.number("dt", io::Limits::positive()), 1e-5);
+  EXPECT_DOUBLE_EQ(sim.number("dt", Limits::positive()), 1e-5);
   EXPECT_EQ(sim.integer("steps", 1, 100), 10);
   EXPECT_EQ(sim.string("name"), "x");
   EXPECT_DOUBLE_EQ(sim.vec3("g").z, -9.81);
-  EXPECT_DOUBLE_EQ(sim.number("missing", io::Limits::any(), 3.0), 3.0);
+  EXPECT_DOUBLE_EQ(sim.number("missing", Limits::any(), 3.0), 3.0);
   EXPECT_NO_THROW(f.reject_unknown());
 }
 
 TEST(CaseTable, ErrorsNameFileKeyLineAndValue) {
-  auto f = io::CaseFile::parse("[sim]\ndt = -1.0\nradius = nan\nkind = \"hertz\"\n", "case.toml");
+  auto f = CaseFile::parse("[sim]\ndt = -1.0\nradius = nan\nkind = \"hertz\"\n", "case.toml");
   auto sim = f.root().table("sim");
   try {
-    sim.number("dt", io::Limits::positive());
+    sim.number("dt", Limits::positive());
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "sim.dt");
@@ -105,10 +125,10 @@ TEST(CaseTable, ErrorsNameFileKeyLineAndValue) {
 }
 
 TEST(CaseTable, UnknownKeyIsRejectedWithSuggestion) {
-  auto f = io::CaseFile::parse("[sim]\ndt = 1.0\ndensty = 2500\n", "c.toml");
+  auto f = CaseFile::parse("[sim]\ndt = 1.0\ndensty = 2500\n", "c.toml");
   auto sim = f.root().table("sim");
   sim.number("dt");
-  sim.number("density", io::Limits::positive(), 1.0);
+  sim.number("density", Limits::positive(), 1.0);
   try {
     f.reject_unknown();
     FAIL();
@@ -120,7 +140,7 @@ TEST(CaseTable, UnknownKeyIsRejectedWithSuggestion) {
 
 TEST(CaseTable, SyntaxErrorHasLine) {
   try {
-    io::CaseFile::parse("a = 1\nb = = 2\n", "bad.toml");
+    CaseFile::parse("a = 1\nb = = 2\n", "bad.toml");
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(e.line(), 2);

@@ -13,10 +13,10 @@
 #include "comminute/core/rng.hpp"
 #include "comminute/geometry/box_wall.hpp"
 #include "comminute/geometry/plane_wall.hpp"
-#include "comminute/io/checkpoint.hpp"
-#include "comminute/io/output_module.hpp"
-#include "comminute/io/run_loop.hpp"
-#include "comminute/io/stop_request.hpp"
+#include "comminute/io/output/checkpoint.hpp"
+#include "comminute/io/output/output_module.hpp"
+#include "comminute/run/run_loop.hpp"
+#include "comminute/run/stop_request.hpp"
 #include "dem_fixture.hpp"
 #include "temp_dir.hpp"
 
@@ -99,7 +99,7 @@ TEST(OutputModule, WritesEachSeriesOnItsCadence) {
   const TestDir dir;
   DemRun run = make_run(dir.path());
   run.sim->setup();
-  ASSERT_EQ(io::run_until(*run.sim, end_time, run.output, nullptr, nullptr), 0);
+  ASSERT_EQ(run::run_until(*run.sim, end_time, run.output, nullptr, nullptr), 0);
   EXPECT_EQ(run.sim->step_count, 1500u);
   // Rows at step 0 and every 25 steps: 1 + 1500/25 = 61, plus the header.
   EXPECT_EQ(count_lines(slurp(dir / "timeseries.csv")), 62u);
@@ -140,7 +140,7 @@ TEST(OutputModule, InterruptAndRestartReproduceTheUninterruptedRun) {
   // A: straight through.
   DemRun a = make_run(dir / "a");
   a.sim->setup();
-  ASSERT_EQ(io::run_until(*a.sim, end_time, a.output, nullptr, nullptr), 0);
+  ASSERT_EQ(run::run_until(*a.sim, end_time, a.output, nullptr, nullptr), 0);
   Archive final_a;
   a.sim->save(final_a);
 
@@ -148,9 +148,9 @@ TEST(OutputModule, InterruptAndRestartReproduceTheUninterruptedRun) {
   {
     DemRun b = make_run(dir / "b", 1037);
     b.sim->setup();
-    io::StopRequest stop;
+    run::StopRequest stop;
     std::FILE* log = std::tmpfile();
-    EXPECT_EQ(io::run_until(*b.sim, end_time, b.output, nullptr, &stop, log), 130);
+    EXPECT_EQ(run::run_until(*b.sim, end_time, b.output, nullptr, &stop, log), 130);
     std::rewind(log);
     char msg[256] = {};
     ASSERT_NE(std::fgets(msg, sizeof msg, log), nullptr);
@@ -168,7 +168,7 @@ TEST(OutputModule, InterruptAndRestartReproduceTheUninterruptedRun) {
   io::CheckpointInfo info;
   c.sim->load(io::read_checkpoint(dir / "b" / "checkpoint.h5", &info));
   EXPECT_EQ(info.threads, max_threads());
-  ASSERT_EQ(io::run_until(*c.sim, end_time, c.output, nullptr, nullptr), 0);
+  ASSERT_EQ(run::run_until(*c.sim, end_time, c.output, nullptr, nullptr), 0);
   Archive final_c;
   c.sim->save(final_c);
 

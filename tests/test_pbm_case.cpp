@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "comminute/core/error.hpp"
-#include "comminute/io/pbm_case.hpp"
+#include "comminute/io/case/pbm_case.hpp"
 
 using namespace comminute;
 
@@ -28,7 +28,7 @@ pbm::Problem problem(const std::string& text, const std::string& name = "case.to
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "feed.csv") << "size_m,cumulative_passing\n1e-4,0.1\n2e-4,0.3\n4e-4,1.0\n";
   std::ofstream(dir / name) << text << rest;
-  const auto f = io::CaseFile::load(dir / name);
+  const auto f = CaseFile::load(dir / name);
   auto p = io::read_pbm_problem(f.root());
   f.reject_unknown();
   return p;

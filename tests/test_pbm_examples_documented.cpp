@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "comminute/io/calibration_case.hpp"
-#include "comminute/io/pbm_case.hpp"
+#include "comminute/io/case/calibration_case.hpp"
+#include "comminute/io/case/pbm_case.hpp"
 
 using namespace comminute;
 
@@ -21,7 +21,7 @@ TEST(PbmExamples, ReadCleanlyAndEveryKeyIsDocumented) {
        std::filesystem::directory_iterator(std::filesystem::path(COMMINUTE_EXAMPLES) / "pbm")) {
     if (e.path().extension() != ".toml") continue;
     ++cases;
-    const auto file = io::CaseFile::load(e.path());
+    const auto file = CaseFile::load(e.path());
     io::read_pbm_problem(file.root());
     io::read_pbm_output(file.root(), e.path());
     if (file.root().has("calibration")) io::read_calibration(file);

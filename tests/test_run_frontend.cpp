@@ -6,9 +6,9 @@
 #include <cstdlib>
 
 #include "comminute/core/error.hpp"
-#include "comminute/io/output_case.hpp"
-#include "comminute/io/progress_reporter.hpp"
-#include "comminute/io/stop_request.hpp"
+#include "comminute/io/case/output_case.hpp"
+#include "comminute/run/progress_reporter.hpp"
+#include "comminute/run/stop_request.hpp"
 
 using namespace comminute;
 
@@ -34,7 +34,7 @@ struct Capture {
 TEST(ProgressReporter, PlainLinesAreThrottledAndCarryRateAndEta) {
   Capture out;
   double now = 100.0;  // fake wall clock, s
-  io::ProgressReporter p(
+  run::ProgressReporter p(
       0.0, 1.0, out.f, false, [&] { return now; }, 0.5, 5.0);
   // 1000 particles, 1e-4 s steps, 1000 steps per wall second: 1e6 particle-steps/s.
   for (int s = 1; s <= 12000; ++s) {
@@ -57,7 +57,7 @@ TEST(ProgressReporter, PlainLinesAreThrottledAndCarryRateAndEta) {
 TEST(ProgressReporter, TerminalRefreshesInPlace) {
   Capture out;
   double now = 0.0;
-  io::ProgressReporter p(
+  run::ProgressReporter p(
       0.0, 2.0, out.f, true, [&] { return now; }, 0.5, 5.0);
   for (int s = 1; s <= 20; ++s) {
     now = 0.1 * s;
@@ -71,22 +71,22 @@ TEST(ProgressReporter, TerminalRefreshesInPlace) {
 
 TEST(StopRequest, SignalSetsFlagInsteadOfKilling) {
   {
-    io::StopRequest stop;
+    run::StopRequest stop;
     EXPECT_FALSE(stop.requested());
     std::raise(SIGINT);  // would end the test program without the handler
     EXPECT_TRUE(stop.requested());
     EXPECT_EQ(stop.exit_code(), 130);
     EXPECT_STREQ(stop.signal_name(), "SIGINT");
-    EXPECT_THROW(io::StopRequest second, Error);
+    EXPECT_THROW(run::StopRequest second, Error);
   }
-  io::StopRequest again;  // a new request starts clear
+  run::StopRequest again;  // a new request starts clear
   EXPECT_FALSE(again.requested());
   std::raise(SIGTERM);
   EXPECT_EQ(again.exit_code(), 143);
 }
 
 TEST(OutputCase, ReadsEveryKey) {
-  auto file = io::CaseFile::parse(R"(
+  auto file = CaseFile::parse(R"(
 [output]
 directory = "results"
 particles = true
@@ -97,7 +97,7 @@ fields = ["damage"]
 timeseries_interval = 1e-4
 checkpoint_interval = 0.05
 )",
-                                  "/cases/box.toml");
+                              "/cases/box.toml");
   const auto o = io::read_output_options(file.root().table("output"));
   file.reject_unknown();
   EXPECT_EQ(o.directory, std::filesystem::path("/cases/results"));
@@ -113,7 +113,7 @@ checkpoint_interval = 0.05
 }
 
 TEST(OutputCase, DefaultsAndBadInput) {
-  auto empty = io::CaseFile::parse("[output]\n", "/cases/a.toml");
+  auto empty = CaseFile::parse("[output]\n", "/cases/a.toml");
   const auto d = io::read_output_options(empty.root().table("output"));
   EXPECT_EQ(d.directory, std::filesystem::path("/cases/output"));
   EXPECT_TRUE(d.particles && d.walls && !d.fields);
@@ -121,7 +121,7 @@ TEST(OutputCase, DefaultsAndBadInput) {
                d.checkpoint_cadence.is_set());
   auto expect_input_error = [](const std::string& text, const std::string& key,
                                const std::string& words) {
-    auto f = io::CaseFile::parse(text, "case.toml");
+    auto f = CaseFile::parse(text, "case.toml");
     try {
       io::read_output_options(f.root().table("output"));
       f.reject_unknown();

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "comminute/core/error.hpp"
-#include "comminute/io/timeseries_csv.hpp"
+#include "comminute/io/output/timeseries_csv.hpp"
 #include "temp_dir.hpp"
 
 using namespace comminute;

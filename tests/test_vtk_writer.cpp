@@ -9,7 +9,7 @@
 
 #include "comminute/core/error.hpp"
 #include "comminute/core/rng.hpp"
-#include "comminute/io/vtk_writer.hpp"
+#include "comminute/io/output/vtk_writer.hpp"
 #include "temp_dir.hpp"
 
 using namespace comminute;

@@ -1,11 +1,11 @@
 #include "case_loading.hpp"
 
-#include "comminute/io/breakage_case.hpp"
+#include "comminute/io/case/breakage_case.hpp"
 
 namespace comminute::app {
 
 LoadedCase load_dem_case(const std::filesystem::path& path) {
-  io::CaseFile file = io::CaseFile::load(path);
+  CaseFile file = CaseFile::load(path);
   io::DemCase dem = io::build_dem_case(file.root());
   const auto output_table = file.root().optional_table("output");
   io::OutputOptions output = output_table ? io::read_output_options(*output_table)

@@ -3,13 +3,13 @@
 // rejected.
 #include <filesystem>
 
-#include "comminute/io/dem_case.hpp"
-#include "comminute/io/output_case.hpp"
+#include "comminute/io/case/dem_case.hpp"
+#include "comminute/io/case/output_case.hpp"
 
 namespace comminute::app {
 
 struct LoadedCase {
-  io::CaseFile file;
+  CaseFile file;
   io::DemCase dem;
   io::OutputOptions output;  // [output], or the defaults when the table is absent
 };

@@ -9,8 +9,8 @@
 
 #include "command.hpp"
 #include "comminute/core/atomic_file.hpp"
-#include "comminute/io/calibration_case.hpp"
-#include "comminute/io/pbm_case.hpp"
+#include "comminute/io/case/calibration_case.hpp"
+#include "comminute/io/case/pbm_case.hpp"
 #include "pbm_output.hpp"
 
 namespace comminute::app {
@@ -62,7 +62,7 @@ std::function<int()> setup_calibrate(CLI::App& sub) {
   sub.add_option("case", *file, "case file (TOML) with a [calibration] table")->required();
   sub.add_flag("--no-plots", *no_plots, "write CSV files only");
   return [file, no_plots] {
-    const auto cf = io::CaseFile::load(*file);
+    const auto cf = CaseFile::load(*file);
     const auto root = cf.root();
     io::read_pbm_problem(root);  // validates the pbm part (and marks its keys used)
     const io::PbmOutput out = io::read_pbm_output(root, cf.path());

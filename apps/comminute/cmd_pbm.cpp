@@ -5,8 +5,8 @@
 #include <chrono>
 
 #include "command.hpp"
-#include "comminute/io/case_table.hpp"
-#include "comminute/io/pbm_case.hpp"
+#include "comminute/core/case_table.hpp"
+#include "comminute/io/case/pbm_case.hpp"
 #include "pbm_output.hpp"
 
 namespace comminute::app {
@@ -19,7 +19,7 @@ std::function<int()> setup_pbm(CLI::App& sub) {
   sub.add_option("case", *file, "case file (TOML)")->required();
   sub.add_flag("--no-plots", *no_plots, "write CSV files only");
   return [file, no_plots] {
-    const auto cf = io::CaseFile::load(*file);
+    const auto cf = CaseFile::load(*file);
     const auto root = cf.root();
     const pbm::Problem p = io::read_pbm_problem(root);
     const io::PbmOutput out = io::read_pbm_output(root, cf.path());

@@ -8,11 +8,11 @@
 #include "command.hpp"
 #include "comminute/breakage/breakage_module.hpp"
 #include "comminute/core/parallel.hpp"
-#include "comminute/io/checkpoint.hpp"
-#include "comminute/io/output_module.hpp"
-#include "comminute/io/progress_reporter.hpp"
-#include "comminute/io/run_loop.hpp"
-#include "comminute/io/stop_request.hpp"
+#include "comminute/io/output/checkpoint.hpp"
+#include "comminute/io/output/output_module.hpp"
+#include "comminute/run/progress_reporter.hpp"
+#include "comminute/run/run_loop.hpp"
+#include "comminute/run/stop_request.hpp"
 
 namespace comminute::app {
 namespace {
@@ -63,9 +63,9 @@ std::function<int()> setup_run(CLI::App& sub) {
     else
       restart_from(sim, a->restart);
 
-    io::StopRequest stop;
-    io::ProgressReporter progress(sim.time, c.dem.end_time);
-    const int rc = io::run_until(sim, c.dem.end_time, &output, &progress, &stop);
+    run::StopRequest stop;
+    run::ProgressReporter progress(sim.time, c.dem.end_time);
+    const int rc = run::run_until(sim, c.dem.end_time, &output, &progress, &stop);
     const double wall = progress.elapsed();
     const Observables o = sim.observe();
     fmt::print(stderr,

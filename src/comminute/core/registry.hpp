@@ -2,10 +2,12 @@
 // A registry by name for one model family (LAMMPS-style plug-ins). A model file registers itself
 //   static const bool reg = ContactLawRegistry::add("hertz_mindlin", &make_hertz_mindlin);
 // and the case file picks it by name. The library is an OBJECT library, so these statics always
-// run. Unknown names fail with the list of known ones.
+// run. Unknown names fail with the list of known ones; a second model under a name already taken is
+// refused (std::logic_error, at start-up: two files claiming one name is a programming error).
 #include <functional>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -17,7 +19,8 @@ class Registry {
   using Factory = std::function<std::unique_ptr<Interface>(Args...)>;
 
   static bool add(const std::string& name, Factory f) {
-    table()[name] = std::move(f);
+    if (!table().emplace(name, std::move(f)).second)
+      throw std::logic_error("two models registered under the name \"" + name + "\"");
     return true;
   }
   static bool contains(const std::string& name) { return table().count(name) > 0; }

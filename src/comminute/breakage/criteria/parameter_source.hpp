@@ -1,6 +1,6 @@
 #pragma once
 // What a breakage model reads from its case-file table. The breakage room sits above io/, so it
-// cannot see io::CaseTable; io/breakage_case adapts a CaseTable to this interface (errors then
+// cannot see CaseTable; io/breakage_case adapts a CaseTable to this interface (errors then
 // name file, key and line), and tests use a plain map.
 #include <limits>
 #include <string>

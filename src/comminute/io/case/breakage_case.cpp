@@ -1,0 +1,154 @@
+#include "comminute/io/case/breakage_case.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "comminute/analysis/size_distribution_observer.hpp"
+#include "comminute/core/error.hpp"
+#include "comminute/core/units.hpp"
+
+namespace comminute::io {
+
+namespace {
+
+// CaseTable seen through the breakage models' ParameterSource.
+class CaseParameters final : public breakage::ParameterSource {
+ public:
+  explicit CaseParameters(const CaseTable& t) : t_(t) {}
+  double number(const std::string& key, double lo, double hi, bool lo_open,
+                double fallback) const override {
+    const Limits lim{lo, hi, lo_open, false};
+    return std::isnan(fallback) ? t_.number(key, lim) : t_.number(key, lim, fallback);
+  }
+  std::vector<double> numbers(const std::string& key, double lo, double hi) const override {
+    return t_.numbers(key, Limits{lo, hi});
+  }
+  std::string choice(const std::string& key, const std::vector<std::string>& choices,
+                     const std::string& fallback) const override {
+    return t_.choice(key, choices, fallback);
+  }
+  bool has(const std::string& key) const override { return t_.has(key); }
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const override {
+    t_.fail(key, message);
+  }
+
+ private:
+  const CaseTable& t_;
+};
+
+std::array<double, 5> five(const CaseTable& t, std::string_view key) {
+  const auto v = t.numbers(key, Limits::positive());
+  if (v.size() != 5)
+    t.fail(key, "needs 5 values, for n = 2, 4, 25, 50, 75 (got " + std::to_string(v.size()) + ")");
+  return {v[0], v[1], v[2], v[3], v[4]};
+}
+
+breakage::MaterialBreakage read_material(const CaseTable& b, const Material& mat) {
+  breakage::MaterialBreakage m;
+  const auto names = breakage::CriterionRegistry::names();
+  const std::string criterion = b.choice("criterion", names);
+  m.criterion = breakage::CriterionRegistry::create(criterion, CaseParameters(b), mat);
+  m.min_breakable_size = b.number("min_breakable_size", Limits::non_negative(), 0.0);
+  m.min_fragment_size = b.number("min_fragment_size", Limits::non_negative(), 0.0);
+  m.min_fragment_ratio = b.number("min_fragment_ratio", Limits{0.0, 1.0, false, true}, 0.05);
+  m.fines = b.choice("fines", {"particles", "mass"}, "particles") == "mass"
+                ? breakage::FinesRule::mass
+                : breakage::FinesRule::particles;
+  m.release_fraction = b.number("release_fraction", Limits::unit_interval(), 0.0);
+  if (m.min_fragment_size <= 0 && m.min_breakable_size <= 0)
+    b.fail("min_fragment_size",
+           "set min_fragment_size or min_breakable_size (m) > 0: otherwise fragments shrink "
+           "without limit and so does the time step");
+  const CaseTable pr = b.table("progeny");
+  breakage::T10Parameters t;
+  t.a = pr.number("A", Limits{0.0, 100.0, true, false});
+  t.b_prime = pr.number("b_prime", Limits::positive());
+  t.alpha = five(pr, "alpha");
+  t.beta = five(pr, "beta");
+  try {
+    m.progeny = breakage::T10Model(t);
+  } catch (const Error& e) {
+    pr.fail("", e.what());
+  }
+  if (m.criterion->median_fracture_energy(1.0) <= 0)
+    m.reference_energy = pr.number("reference_energy", Limits::positive());
+  else
+    m.reference_energy = pr.number("reference_energy", Limits::positive(), -1.0);
+  return m;
+}
+
+}  // namespace
+
+breakage::BreakageModule* add_breakage(const CaseTable& root, DemCase& dem,
+                                       const std::filesystem::path& output_dir) {
+  Simulation& sim = *dem.sim;
+  std::vector<std::optional<breakage::MaterialBreakage>> mats(sim.materials.size());
+  bool any = false;
+  const CaseTable materials = root.table("materials");
+  for (std::size_t k = 0; k < sim.materials.size(); ++k) {
+    const Material& mat = sim.materials.material(static_cast<std::uint16_t>(k));
+    const auto t = materials.table(mat.name).optional_table("breakage");
+    if (!t) continue;
+    mats[k] = read_material(*t, mat);
+    any = true;
+  }
+  const auto g = root.optional_table("breakage");
+  if (!any) {
+    if (g) g->fail("", "[breakage] is set but no material has a [materials.<name>.breakage] table");
+    return nullptr;
+  }
+  breakage::BreakageOptions opt;
+  analysis::SieveOptions sieves;
+  double psd_interval = 0;
+  if (g) {
+    opt.placement.overlap_ratio = g->number("overlap_ratio", Limits{0.0, 0.5, true, false}, 0.01);
+    opt.placement.attempts = static_cast<int>(g->integer("placement_attempts", 1, 10000, 30));
+    opt.growth_step = g->number("growth_step", Limits{0.0, 1.0, true, false}, 0.005);
+    opt.growth_overlap_ratio =
+        g->number("growth_overlap_ratio", Limits{0.0, 0.5, false, false}, 0.001);
+    opt.event_end_steps = static_cast<int>(g->integer("event_end_steps", 1, 1000000, 20));
+    opt.log_all_events = g->boolean("log_all_events", false);
+    opt.replacement_interval = static_cast<int>(g->integer("replacement_interval", 1, 1000, 1));
+    opt.output_interval = g->number("output_interval", Limits::non_negative(), 0.0);
+    psd_interval = g->number("size_distribution_interval", Limits::non_negative(), 0.0);
+    if (g->has("sieves")) sieves.sieves = g->numbers("sieves", Limits::positive());
+    sieves.bottom = g->number("sieve_bottom", Limits::non_negative(), 0.0);
+  }
+  opt.output_dir = output_dir;
+  // Fragments are smaller than the inserted particles: the time step must resolve the smallest
+  // one breakage can create, max(min_fragment_size, min_fragment_ratio x min_breakable_size).
+  const CaseTable simulation = root.table("simulation");
+  for (std::size_t k = 0; k < mats.size(); ++k) {
+    if (!mats[k]) continue;
+    const double d = std::max(mats[k]->min_fragment_size,
+                              mats[k]->min_fragment_ratio * mats[k]->min_breakable_size);
+    const Material& m = sim.materials.material(static_cast<std::uint16_t>(k));
+    const double t_rayleigh = units::pi * 0.5 * d * std::sqrt(m.density / m.shear_modulus()) /
+                              (0.1631 * m.poisson_ratio + 0.8766);
+    const double fraction =
+        simulation.number("time_step_fraction", Limits{0.0, 1.0, true, false}, 0.2);
+    if (simulation.has("time_step")) {
+      if (sim.dt > 0.3 * t_rayleigh)
+        simulation.fail("time_step",
+                        fmt::format("{:.4g} s is {:.0f} % of the Rayleigh time {:.4g} s of the "
+                                    "smallest fragment ({:.4g} m) material '{}' can produce",
+                                    sim.dt, 100 * sim.dt / t_rayleigh, t_rayleigh, d, m.name));
+    } else if (fraction * t_rayleigh < sim.dt) {
+      sim.dt = fraction * t_rayleigh;
+      dem.time_step_note += fmt::format(
+          "; lowered to {:.4g} s = {:.0f} % of the Rayleigh time of the smallest fragment "
+          "({:.4g} m) material '{}' can produce",
+          sim.dt, 100 * fraction, d, m.name);
+    }
+  }
+  auto module = std::make_unique<breakage::BreakageModule>(std::move(mats), opt);
+  module->register_fields(sim.particles);
+  breakage::BreakageModule* out = module.get();
+  sim.modules.push_back(std::move(module));
+  sim.modules.push_back(
+      std::make_unique<analysis::SizeDistributionObserver>(out, sieves, psd_interval));
+  return out;
+}
+
+}  // namespace comminute::io

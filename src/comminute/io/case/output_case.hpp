@@ -1,0 +1,43 @@
+#pragma once
+// The [output] table of a case file: what a run writes, where and how often (docs/case-file.md,
+// section "[output]").
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "comminute/core/case_table.hpp"
+
+namespace comminute::io {
+
+// How often a series is written: every `interval` seconds of simulated time or every `steps`
+// steps; neither set = the series' default (a fraction of the run, or never for checkpoints).
+struct Cadence {
+  double interval = 0;      // s
+  std::uint64_t steps = 0;  // steps
+  bool is_set() const { return interval > 0 || steps > 0; }
+};
+
+struct OutputOptions {
+  std::filesystem::path directory = "output";
+  bool particles = true;      // particle snapshots (particles.pvd)
+  Cadence particles_cadence;  // default: 100 snapshots over the run
+  bool walls = true;          // wall snapshots with each particle snapshot (walls.pvd)
+  double wall_extent = 0;     // m, half-size of drawn infinite planes; 0 = from the particle cloud
+  std::optional<std::vector<std::string>> fields;  // per-particle fields; nullopt = all
+  Cadence timeseries_cadence;                      // default: 1000 rows over the run
+  Cadence checkpoint_cadence;  // default: only at the end of the run and on a stop signal
+
+  // Where `fields` was given, so that an unknown name (known only once the modules have
+  // registered their fields) is reported as an input error at the right line.
+  std::filesystem::path case_file;
+  long fields_line = 0;
+};
+
+// Reads the [output] table (`t` is that table). Every key is optional.
+OutputOptions read_output_options(const CaseTable& t);
+// Defaults when the case has no [output] table: directory "output" next to the case file.
+OutputOptions default_output_options(const std::filesystem::path& case_file);
+
+}  // namespace comminute::io

@@ -1,0 +1,68 @@
+#pragma once
+// Writes a run's outputs as the simulation advances, as configured by [output]:
+//   <directory>/particles.pvd + particles/*.vtp   particle snapshots (ParaView)
+//   <directory>/walls.pvd + walls/*.vtp           wall surfaces with forces
+//   <directory>/timeseries.csv                    energies, contacts, wall forces vs time
+//   <directory>/checkpoint.h5                     the latest checkpoint (restart from it)
+// Add it to Simulation::modules; call start() once before stepping (after setup() or load()) and
+// finish() at the end or on a stop. After Simulation::load() (a restart) the series continue:
+// entries after the checkpoint's time are dropped, earlier ones are kept.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "comminute/engine/module.hpp"
+#include "comminute/io/case/output_case.hpp"
+#include "comminute/io/output/timeseries_csv.hpp"
+#include "comminute/io/output/vtk_writer.hpp"
+
+namespace comminute::io {
+
+class OutputModule : public Module {
+ public:
+  // end_time (s): the run's end, for the default cadences (100 snapshots, 1000 rows per run).
+  OutputModule(OutputOptions options, double end_time);
+
+  std::string name() const override { return "output"; }
+  void end_of_step(Simulation& sim) override;  // writes what is due at this step
+  void save(Archive& a) const override;
+  void load(const Archive& a) override;
+
+  // Opens the series (fresh, or continued after load()); a fresh run also writes the initial
+  // state (snapshot and row at the start time).
+  void start(Simulation& sim);
+  // Writes the last snapshot and row (unless written at this step already) and a checkpoint.
+  void finish(Simulation& sim);
+  // Writes <directory>/checkpoint.h5 now (atomically; the previous one stays until replaced).
+  void write_checkpoint(Simulation& sim);
+
+  const OutputOptions& options() const { return options_; }
+  std::filesystem::path checkpoint_path() const { return options_.directory / "checkpoint.h5"; }
+  std::filesystem::path timeseries_path() const { return options_.directory / "timeseries.csv"; }
+
+ private:
+  // When a series is next due: time-based series count outputs (next at k * interval).
+  struct Schedule {
+    Cadence cadence;
+    std::uint64_t next_index = 0;                 // time-based
+    std::uint64_t last_step = ~std::uint64_t{0};  // step of the last output
+    bool due(double time, std::uint64_t step, double dt) const;
+    void done(double time, std::uint64_t step, double dt);
+  };
+
+  void check_fields(const ParticleStore& p) const;
+  void write_snapshot(Simulation& sim);
+  void write_row(Simulation& sim);
+  double wall_extent(const Simulation& sim) const;
+
+  OutputOptions options_;
+  Schedule particles_, timeseries_, checkpoint_;
+  double extent_ = 0;                  // m, fixed at the first wall snapshot
+  std::optional<double> resume_time_;  // set by load()
+  bool started_ = false;
+  std::unique_ptr<VtkWriter> vtk_;
+  std::unique_ptr<TimeSeriesWriter> csv_;
+};
+
+}  // namespace comminute::io

@@ -1,0 +1,28 @@
+#pragma once
+// The loop of `comminute run`: steps a set-up simulation to its end time with outputs, the
+// progress line and a clean stop on SIGINT/SIGTERM.
+#include <cstdio>
+
+namespace comminute {
+class Simulation;
+}
+namespace comminute::io {
+class OutputModule;
+}
+
+namespace comminute::run {
+
+using io::OutputModule;
+class ProgressReporter;
+class StopRequest;
+
+// Steps `sim` (already set up, or loaded from a checkpoint) until its time reaches end_time (s)
+// to within half a step. Any of the helpers may be null. Between steps it checks `stop`; on a
+// request it writes a checkpoint (only: so that a restart from it continues every series exactly
+// as an uninterrupted run would), says so on `log` and returns stop->exit_code() (130 for
+// SIGINT). Otherwise it finishes the outputs at the end (last snapshot, row, checkpoint), returns
+// 0. A SimulationError (NaN, ...) propagates; the rows written so far are already on disk.
+int run_until(Simulation& sim, double end_time, OutputModule* output, ProgressReporter* progress,
+              const StopRequest* stop, std::FILE* log = stderr);
+
+}  // namespace comminute::run

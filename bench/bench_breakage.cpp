@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
   pi.restitution = 0.5;
   pi.friction = 0.3;
   sim.materials.set_pair(0, 0, pi);
-  sim.law = ContactLawRegistry::create("hertz_mindlin", ContactOptions{});
+  sim.law = ContactLawRegistry::create("hertz_mindlin", CaseFile::parse("").root());
   sim.gravity = {0, 0, 0};
   sim.seed = 5;
   const double d = 0.003, a = 0.995 * d;  // 0.5 % overlaps: a pre-stressed, contact-rich bed

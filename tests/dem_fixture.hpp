@@ -27,11 +27,13 @@ inline std::unique_ptr<Simulation> make_simulation(const DemSetup& s) {
   pi.rolling_friction = s.rolling_friction;
   pi.cohesion_energy_density = s.cohesion;
   sim->materials.set_pair(0, 0, pi);
-  ContactOptions co;
-  co.linear_normal_stiffness = s.linear_stiffness;
-  sim->law = ContactLawRegistry::create(s.law, co);
-  if (!s.rolling.empty()) sim->rolling = RollingResistanceRegistry::create(s.rolling);
-  if (s.cohesion > 0) sim->cohesion = CohesionRegistry::create("sjkr");
+  // the [contact] table the models read their keys from
+  const CaseFile contact =
+      CaseFile::parse("normal_stiffness = " + std::to_string(s.linear_stiffness) + "\n");
+  sim->law = ContactLawRegistry::create(s.law, contact.root());
+  if (!s.rolling.empty())
+    sim->rolling = RollingResistanceRegistry::create(s.rolling, contact.root());
+  if (s.cohesion > 0) sim->cohesion = CohesionRegistry::create("sjkr", contact.root());
   sim->gravity = s.gravity;
   return sim;
 }

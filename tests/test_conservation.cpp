@@ -159,7 +159,8 @@ TEST(ContactHistory, SurvivesRebuildAndReorder) {
   a->run(3);
   b->run(3);
   const std::size_t ia = slot_of(*a, 2), ib = slot_of(*b, 2);
-  ASSERT_GT(norm(a->pairs().history[0].tangential_spring), 0.0);  // the spring is loaded
+  const auto& state = a->pair_state();
+  ASSERT_GT(norm(state.at(0).vec3(state.vec3_slot("tangential_spring"))), 0.0);  // loaded spring
   EXPECT_EQ(a->particles.x[ia], b->particles.x[ib]);
   EXPECT_EQ(a->particles.v[ia], b->particles.v[ib]);
   EXPECT_EQ(a->particles.f[ia], b->particles.f[ib]);

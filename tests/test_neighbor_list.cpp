@@ -102,7 +102,7 @@ TEST(NeighborList, InPlaceUpdateEqualsAFreshBuild) {
     EXPECT_EQ(listed(nl, p), brute_force(p, skin)) << "round " << round;
   }
   // a list restored from a checkpoint re-creates its index and continues identically
-  restored.restore(nl.first, nl.second, nl.history, nl.touching, nl.ids_at_build(), nl.large());
+  restored.restore(nl.first, nl.second, nl.ids_at_build(), nl.large());
   restored.rebuild_index(p.x, p.radius, skin);
   for (std::size_t i = 0; i < p.size(); i += 3) p.flags[i] |= pflag::remove;
   p.compact();

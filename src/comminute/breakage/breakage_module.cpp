@@ -89,12 +89,14 @@ void BreakageModule::initialize_particle(Simulation& sim, std::size_t i) {
 }
 
 namespace {
-// The contact law evaluated at rest between sphere i (radius, mass, material) and a sphere
-// (r_j > 0) or a wall (r_j = 0) at `overlap` along `normal`, on a copy of the history h: nothing
-// slips or advances. Gives the forces and energies a contact holds in that state.
+// The contact model evaluated at rest between sphere i (radius, mass, material) and a sphere
+// (r_j > 0) or a wall (r_j = 0) at `overlap` along `normal`, on a copy of the contact's state
+// (fresh by default): nothing slips or advances. Gives the forces and energies a contact holds in
+// that state.
 ContactForces contact_at_rest(const Simulation& sim, double overlap, double r_i, double m_i,
                               std::uint16_t a, double r_j, double m_j, std::uint16_t b,
-                              const Vec3& normal = {0, 0, 1}, ContactHistory h = {}) {
+                              const Vec3& normal = {0, 0, 1},
+                              const ContactScratch& state = ContactScratch{}) {
   ContactKinematics ck;
   ck.normal = normal;
   ck.overlap = overlap;
@@ -102,7 +104,7 @@ ContactForces contact_at_rest(const Simulation& sim, double overlap, double r_i,
   ck.effective_mass = m_j > 0 ? m_i * m_j / (m_i + m_j) : m_i;
   ck.dt = 0;
   ContactForces out;
-  sim.law->compute(ck, sim.materials.pair(a, b), h, out);
+  sim.contacts().evaluate(ck, sim.materials.pair(a, b), state.ref(), out);
   return out;
 }
 
@@ -235,25 +237,28 @@ void BreakageModule::update_events(Simulation& sim) {
   const std::size_t n = p.size();
   contact_load_.assign(n, ContactLoad{});
   const auto& nl = sim.pairs();
+  const ContactStateStore& pairs = sim.pair_state();
+  const LoadingRecord& loading = *sim.contacts().loading();
   parallel_scatter(
       nl.size(), contact_load_, ContactLoad{},
       [&](std::size_t k, std::vector<ContactLoad>& acc) {
-        if (!nl.touching[k]) return;
+        if (!pairs.active[k]) return;
         const std::uint32_t i = nl.first[k], j = nl.second[k];
-        const ContactHistory& h = nl.history[k];
+        const StateRef h = pairs.at(k);
         const std::size_t a = p.material[i], b = p.material[j];
-        acc[i].work += share_[a * n_materials_ + b] * h.loading_work;
-        acc[j].work += share_[b * n_materials_ + a] * h.loading_work;
-        acc[i].force += h.normal_force;
-        acc[j].force += h.normal_force;
+        acc[i].work += share_[a * n_materials_ + b] * loading.loading_work(h);
+        acc[j].work += share_[b * n_materials_ + a] * loading.loading_work(h);
+        acc[i].force += loading.normal_force(h);
+        acc[j].force += loading.normal_force(h);
       },
       [](ContactLoad x, const ContactLoad& y) {
         return ContactLoad{x.work + y.work, x.force + y.force};
       });
   for (const auto& c : sim.wall_contacts()) {
     const std::size_t a = p.material[c.particle], b = sim.walls[c.wall]->material;
-    contact_load_[c.particle].work += share_[a * n_materials_ + b] * c.history.loading_work;
-    contact_load_[c.particle].force += c.history.normal_force;
+    const StateRef h = sim.wall_state().at(c.candidate);
+    contact_load_[c.particle].work += share_[a * n_materials_ + b] * loading.loading_work(h);
+    contact_load_[c.particle].force += loading.normal_force(h);
   }
   auto& in_event = p.field(f_in_event_);
   auto& energy = p.field(f_energy_);
@@ -356,15 +361,15 @@ void BreakageModule::end_of_step(Simulation& sim) {
       if (!bi && !bj) continue;
       if (bi) around[i].push_back(j);
       if (bj) around[j].push_back(i);
-      if (nl.touching[k]) {  // elastic energy that disappears with the parent's contacts
+      if (sim.pair_state().active[k]) {  // elastic energy that leaves with the parent's contacts
         const Vec3 dx = p.x[i] - p.x[j];
         const double dist = norm(dx);
         const double ov = p.radius[i] + p.radius[j] - dist;
         if (ov > 0 && dist > 0) {
-          const double u =
-              contact_at_rest(sim, ov, p.radius[i], p.mass[i], p.material[i], p.radius[j],
-                              p.mass[j], p.material[j], dx / dist, nl.history[k])
-                  .stored_energy;
+          const double u = contact_at_rest(sim, ov, p.radius[i], p.mass[i], p.material[i],
+                                           p.radius[j], p.mass[j], p.material[j], dx / dist,
+                                           ContactScratch(sim.pair_state(), k))
+                               .stored_energy;
           removed_ += u;
           sim.ledger.removed += u;
         }
@@ -379,7 +384,8 @@ void BreakageModule::end_of_step(Simulation& sim) {
         if (f.feature == c.feature && f.overlap > 0) {
           const std::uint32_t i = c.particle;
           const double u = contact_at_rest(sim, f.overlap, p.radius[i], p.mass[i], p.material[i], 0,
-                                           0, sim.walls[c.wall]->material, f.normal, c.history)
+                                           0, sim.walls[c.wall]->material, f.normal,
+                                           ContactScratch(sim.wall_state(), c.candidate))
                                .stored_energy;
           removed_ += u;
           sim.ledger.removed += u;

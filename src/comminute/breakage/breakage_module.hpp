@@ -89,6 +89,8 @@ class BreakageModule final : public Module {
   void register_fields(ParticleStore& p);
   void set_output_directory(const std::filesystem::path& dir) { opt_.output_dir = dir; }
   const std::filesystem::path& output_directory() const { return opt_.output_dir; }
+  // Breakage reads each contact's loading record.
+  void declare_contact_state(ContactPipeline& c) override { c.require_loading_record(); }
   void setup(Simulation& sim) override;
   void pre_force(Simulation& sim) override;
   void post_force(Simulation& sim) override;

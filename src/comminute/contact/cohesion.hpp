@@ -1,5 +1,5 @@
 #pragma once
-// Adhesion models ([contact] cohesion = "none" | "sjkr").
+// Adhesion models ([contact] cohesion = "none" | "sjkr"), built from the [contact] table.
 #include <string>
 
 #include "comminute/contact/contact_law.hpp"
@@ -15,6 +15,6 @@ class Cohesion {
                        ContactForces& out) const = 0;
 };
 
-using CohesionRegistry = Registry<Cohesion>;
+using CohesionRegistry = Registry<Cohesion, const CaseTable&>;
 
 }  // namespace comminute

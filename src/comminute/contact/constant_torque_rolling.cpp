@@ -13,7 +13,7 @@ namespace {
 class ConstantTorqueRolling final : public RollingResistance {
  public:
   std::string name() const override { return "constant_torque"; }
-  void compute(const ContactKinematics& k, const PairParameters& p, ContactHistory&,
+  void compute(const ContactKinematics& k, const PairParameters& p, const StateRef&,
                ContactForces& out) const override {
     // rolling part of the relative angular velocity (twist about the normal excluded)
     const Vec3 wr =
@@ -32,7 +32,7 @@ class ConstantTorqueRolling final : public RollingResistance {
 };
 
 const bool registered = RollingResistanceRegistry::add(
-    "constant_torque", [] { return std::make_unique<ConstantTorqueRolling>(); });
+    "constant_torque", [](const CaseTable&) { return std::make_unique<ConstantTorqueRolling>(); });
 
 }  // namespace
 }  // namespace comminute

@@ -1,30 +1,20 @@
 #pragma once
 // Contact laws: one interface for particle–particle and particle–wall contacts, chosen by name in
-// the case file ([contact] model = "hertz_mindlin" | "linear_spring_dashpot"). Rolling resistance
-// and adhesion are separate small interfaces composed with the law (see rolling.hpp, cohesion.hpp).
+// the case file ([contact] model = "hertz_mindlin" | "linear_spring_dashpot"). A law is built
+// from the [contact] table and reads its own keys; it declares the per-contact state it keeps
+// (contact_state.hpp) and answers for its own time-step limit. Rolling resistance and adhesion are
+// separate small interfaces composed with the law (rolling_resistance.hpp, cohesion.hpp).
+#include <limits>
 #include <memory>
 #include <string>
 
+#include "comminute/contact/contact_state.hpp"
+#include "comminute/core/case_table.hpp"
 #include "comminute/core/registry.hpp"
 #include "comminute/core/vec3.hpp"
 #include "comminute/particles/material.hpp"
 
 namespace comminute {
-
-// Per-contact state that survives from step to step (and across neighbour-list rebuilds and
-// particle reordering: it is keyed by the two particle ids). Modules read it (breakage uses the
-// loading work and peak force).
-struct ContactHistory {
-  Vec3 tangential_spring;  // m, accumulated tangential displacement (in the current tangent plane)
-  Vec3 rolling_spring;     // N m, elastic rolling torque (EPSD model)
-  // Loading record for breakage models, in single precision (a dense bed holds several hundred
-  // thousand histories: 64 bytes each keeps a 100k-particle bed under 1 kB per particle).
-  float max_overlap = 0;   // m, largest overlap in this contact
-  float loading_work = 0;  // J, elastic work of the normal force up to max_overlap
-  float normal_force = 0;  // N, elastic normal force of the last step (0 when apart)
-  float unused = 0;        // explicit padding: checkpoints copy the bytes of this struct
-};
-static_assert(sizeof(ContactHistory) == 64);
 
 // Geometry and relative motion of one contact, computed by the engine.
 struct ContactKinematics {
@@ -51,25 +41,32 @@ struct ContactForces {
   double friction_dissipation = 0;   // J, dissipated by sliding (and rolling slip) this step
 };
 
+// The largest time step a law resolves, and why (s; infinity: no limit of its own, the Rayleigh
+// time of the time-step policy governs).
+struct StepLimit {
+  double dt = std::numeric_limits<double>::infinity();
+  std::string reason;
+};
+
 class ContactLaw {
  public:
   virtual ~ContactLaw() = default;
   virtual std::string name() const = 0;
-  // Normal and tangential force for one contact; updates the history.
-  virtual void compute(const ContactKinematics& k, const PairParameters& p, ContactHistory& h,
+  // Declares the law's per-contact slots (called once, before any contact list exists).
+  virtual void declare(ContactStateStore& layout) = 0;
+  // Normal and tangential force for one contact; updates the contact's slots in `s`.
+  virtual void compute(const ContactKinematics& k, const PairParameters& p, const StateRef& s,
                        ContactForces& out) const = 0;
-  // Normal stiffness at overlap `delta` (N/m), for the time-step check and energy partition.
+  // Normal stiffness at overlap `delta` (N/m), for energy partition.
   virtual double normal_stiffness(const PairParameters& p, double effective_radius,
                                   double effective_mass, double delta) const = 0;
+  // Time-step limit for a contact between two particles of this radius (m) and mass (kg).
+  virtual StepLimit step_limit(const PairParameters&, double /*radius*/, double /*mass*/) const {
+    return {};
+  }
 };
 
-// Options common to all laws, from [contact] in the case file.
-struct ContactOptions {
-  double linear_normal_stiffness = 0;          // N/m, linear spring–dashpot k_n
-  double linear_tangential_ratio = 2.0 / 7.0;  // k_t / k_n for the linear law
-  bool tangential_damping = true;              // dashpot in the tangential direction
-};
-
-using ContactLawRegistry = Registry<ContactLaw, const ContactOptions&>;
+// A law's factory reads the law's keys from the [contact] table.
+using ContactLawRegistry = Registry<ContactLaw, const CaseTable&>;
 
 }  // namespace comminute

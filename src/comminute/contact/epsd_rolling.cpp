@@ -1,7 +1,7 @@
 // Elastic–plastic spring–dashpot rolling resistance (Ai et al. 2011, model C; Iwashita & Oda):
 // k_r = 2.25 k_n mu_r^2 R*^2, dM = -k_r w_rel dt, |M| <= mu_r R* |F_n| (full mobilisation, no
 // damping), viscous part -C_r w_rel with C_r = eta_r 2 sqrt(I_r k_r), I_r = m* R*^2 (eta_r from
-// [pair] rolling_damping). The spring torque is stored in ContactHistory::rolling_spring (N m).
+// [pair] rolling_damping). The spring torque is kept in the contact's slot "rolling_spring" (N m).
 #include <cmath>
 
 #include "comminute/contact/rolling_resistance.hpp"
@@ -12,15 +12,19 @@ namespace {
 class EpsdRolling final : public RollingResistance {
  public:
   std::string name() const override { return "epsd"; }
-  void compute(const ContactKinematics& k, const PairParameters& p, ContactHistory& h,
+  void declare(ContactStateStore& layout) override {
+    spring_ = layout.declare_vec3("rolling_spring", SwapRule::negate);
+  }
+  void compute(const ContactKinematics& k, const PairParameters& p, const StateRef& s,
                ContactForces& out) const override {
+    Vec3& spring = s.vec3(spring_);
     const double r = k.effective_radius;
     const Vec3 wr =
         k.relative_angular_velocity - dot(k.relative_angular_velocity, k.normal) * k.normal;
     // k_n from the secant stiffness of the normal force
     const double kn = k.overlap > 0 ? std::abs(out.elastic_normal_force) / k.overlap : 0.0;
     const double kr = 2.25 * kn * p.rolling_friction * p.rolling_friction * r * r;
-    Vec3 m = h.rolling_spring;
+    Vec3 m = spring;
     m -= dot(m, k.normal) * k.normal;  // keep it in the tangent plane
     m -= kr * k.dt * wr;
     const double limit = p.rolling_friction * r * std::abs(out.normal_force);
@@ -30,20 +34,23 @@ class EpsdRolling final : public RollingResistance {
       const Vec3 trial = m;
       m *= limit / mm;
       if (kr > 0) out.friction_dissipation += limit * norm(trial - m) / kr;
-      h.rolling_spring = m;
+      spring = m;
       out.rolling_torque += m;
       return;
     }
-    h.rolling_spring = m;
+    spring = m;
     const double cr = p.rolling_damping * 2.0 * std::sqrt(k.effective_mass * r * r * kr);
     out.rolling_torque += m - cr * wr;
     out.damping_dissipation += cr * norm2(wr) * k.dt;
     if (kr > 0) out.stored_energy += 0.5 * norm2(m) / kr;
   }
+
+ private:
+  SlotId spring_ = 0;
 };
 
-const bool registered =
-    RollingResistanceRegistry::add("epsd", [] { return std::make_unique<EpsdRolling>(); });
+const bool registered = RollingResistanceRegistry::add(
+    "epsd", [](const CaseTable&) { return std::make_unique<EpsdRolling>(); });
 
 }  // namespace
 }  // namespace comminute

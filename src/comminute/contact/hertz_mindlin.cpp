@@ -1,5 +1,8 @@
-// Hertz–Mindlin contact with Tsuji-type damping and Coulomb friction with tangential history
-// (MODELS.md "Contact mechanics"; the LIGGGHTS/EDEM formulation).
+// Hertz–Mindlin contact with Tsuji-type damping and Coulomb friction with tangential history, the
+// LIGGGHTS/EDEM formulation (docs/models.md "Contact laws"): F_n = (4/3) E* sqrt(R*) δ^1.5 (Hertz,
+// J. reine angew. Math. 1882), S_t = 8 G* a (Mindlin, J. Appl. Mech. 1949), dashpots
+// -2 sqrt(5/6) β sqrt(S m*) v (Tsuji, Tanaka & Ishida, Powder Technol. 1992).
+// Keys of [contact]: tangential_damping (bool, default true).
 #include <cmath>
 
 #include "comminute/contact/tangential_friction.hpp"
@@ -9,10 +12,12 @@ namespace {
 
 class HertzMindlin final : public ContactLaw {
  public:
-  explicit HertzMindlin(const ContactOptions& o) : opt_(o) {}
+  explicit HertzMindlin(const CaseTable& t)
+      : tangential_damping_(t.boolean("tangential_damping", true)) {}
   std::string name() const override { return "hertz_mindlin"; }
+  void declare(ContactStateStore& layout) override { spring_ = declare_tangential_spring(layout); }
 
-  void compute(const ContactKinematics& k, const PairParameters& p, ContactHistory& h,
+  void compute(const ContactKinematics& k, const PairParameters& p, const StateRef& s,
                ContactForces& out) const override {
     const double delta = k.overlap;
     const double a = std::sqrt(k.effective_radius * delta);  // contact radius sqrt(R* delta)
@@ -29,10 +34,10 @@ class HertzMindlin final : public ContactLaw {
     out.stored_energy = out.normal_elastic_energy;
     out.damping_dissipation = fd * k.overlap_rate * k.dt;
     const double st = 8.0 * p.effective_shear_modulus * a;  // Mindlin S_t = 8 G* a
-    const double gt = opt_.tangential_damping
+    const double gt = tangential_damping_
                           ? -2.0 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(st * k.effective_mass)
                           : 0.0;
-    coulomb_tangential(k, st, gt, p.friction * std::abs(out.normal_force), h, out);
+    coulomb_tangential(k, st, gt, p.friction * std::abs(out.normal_force), s.vec3(spring_), out);
   }
 
   double normal_stiffness(const PairParameters& p, double r, double, double delta) const override {
@@ -40,11 +45,12 @@ class HertzMindlin final : public ContactLaw {
   }
 
  private:
-  ContactOptions opt_;
+  bool tangential_damping_;
+  SlotId spring_ = 0;
 };
 
 const bool registered = ContactLawRegistry::add(
-    "hertz_mindlin", [](const ContactOptions& o) { return std::make_unique<HertzMindlin>(o); });
+    "hertz_mindlin", [](const CaseTable& t) { return std::make_unique<HertzMindlin>(t); });
 
 }  // namespace
 }  // namespace comminute

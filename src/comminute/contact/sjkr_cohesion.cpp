@@ -20,8 +20,8 @@ class SjkrCohesion final : public Cohesion {
   }
 };
 
-const bool registered =
-    CohesionRegistry::add("sjkr", [] { return std::make_unique<SjkrCohesion>(); });
+const bool registered = CohesionRegistry::add(
+    "sjkr", [](const CaseTable&) { return std::make_unique<SjkrCohesion>(); });
 
 }  // namespace
 }  // namespace comminute

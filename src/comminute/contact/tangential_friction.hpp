@@ -10,12 +10,18 @@
 
 namespace comminute {
 
-// kt: tangential stiffness (N/m), ct: tangential damping (N s/m), limit: mu |F_n| (N).
-// Sets out.tangential_force, adds to out.stored_energy, out.damping_dissipation,
-// out.friction_dissipation.
+// The slot of the spring: the tangential displacement of i relative to j (m), which changes sign
+// when i and j swap.
+inline SlotId declare_tangential_spring(ContactStateStore& layout) {
+  return layout.declare_vec3("tangential_spring", SwapRule::negate);
+}
+
+// kt: tangential stiffness (N/m), ct: tangential damping (N s/m), limit: mu |F_n| (N),
+// `stored`: the contact's stored displacement (m). Sets out.tangential_force, adds to
+// out.stored_energy, out.damping_dissipation, out.friction_dissipation.
 inline void coulomb_tangential(const ContactKinematics& k, double kt, double ct, double limit,
-                               ContactHistory& h, ContactForces& out) {
-  Vec3 xi = h.tangential_spring;
+                               Vec3& stored, ContactForces& out) {
+  Vec3 xi = stored;
   // rotate into the current tangent plane, preserving the magnitude
   const double len2 = norm2(xi);
   if (len2 > 0.0) {
@@ -41,7 +47,7 @@ inline void coulomb_tangential(const ContactKinematics& k, double kt, double ct,
     if (ft2 > limit * limit) ft *= limit / std::sqrt(ft2);
     out.damping_dissipation += -dot(ft - fs, k.tangential_velocity) * k.dt;
   }
-  h.tangential_spring = xi;
+  stored = xi;
   out.tangential_force = ft;
   out.stored_energy += 0.5 * kt * norm2(xi);
 }

@@ -12,11 +12,15 @@
 namespace comminute {
 
 class Simulation;
+class ContactPipeline;
 
 class Module {
  public:
   virtual ~Module() = default;
   virtual std::string name() const = 0;
+  // Asks for per-contact state (e.g. the loading record) before the contact lists exist; called
+  // once, at set-up or before a checkpoint is read.
+  virtual void declare_contact_state(ContactPipeline&) {}
   virtual void setup(Simulation&) {}
   virtual void pre_force(Simulation&) {}
   virtual void post_force(Simulation&) {}

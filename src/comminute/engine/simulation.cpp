@@ -20,9 +20,18 @@ constexpr std::size_t kParallelMin = 4096;
 Simulation::Simulation() = default;
 Simulation::~Simulation() = default;
 
-void Simulation::setup() {
+void Simulation::assemble_contacts() {
+  if (contacts_.assembled()) return;
   if (!law) throw Error("simulation has no contact law");
+  for (auto& m : modules) m->declare_contact_state(contacts_);
+  const ContactStateStore& layout = contacts_.assemble(*law, rolling.get(), cohesion.get());
+  pair_state_ = layout.same_layout();
+  wall_state_ = layout.same_layout();
+}
+
+void Simulation::setup() {
   if (!(dt > 0)) throw Error("simulation time step is not set");
+  assemble_contacts();
   flush_denormals_to_zero();
   for (auto& m : modules) m->setup(*this);
   is_setup_ = true;
@@ -129,7 +138,9 @@ void Simulation::rebuild() {
     auto order = NeighborList::cell_order(p, 2 * rmax + options.skin);
     p.permute(order);
   }
-  nlist_.build(p, options.skin);
+  nlist_.build(p, options.skin, pair_state_.active);
+  const auto& carried = nlist_.carried();
+  pair_state_.carry(carried.from, carried.to, carried.reversed, nlist_.size());
   x_at_build_ = p.x;
   r_at_build_ = p.radius;
   reach_tracked_.clear();
@@ -141,25 +152,30 @@ void Simulation::rebuild() {
 }
 
 void Simulation::add_wall_candidates(std::uint32_t i, std::uint32_t w, const Vec3& x, double r,
-                                     std::vector<WallContact>& found) {
+                                     std::vector<WallContact>& found,
+                                     std::vector<WallContactRecord>& into) const {
   found.clear();
   const bool near = walls[w]->contacts(x, r, options.skin, found) > 0;
   if (!near && !wall_full_scan_[w]) return;
   // one candidate per (particle, wall, feature); a full-scan wall keeps one per particle
   if (found.empty()) found.push_back({{}, {}, -1, 0});
-  for (const auto& c : found) wall_candidates_.push_back({i, w, c.feature, 0, particles.id[i], {}});
+  for (const auto& c : found)
+    into.push_back({i, w, c.feature, NeighborList::none, particles.id[i]});
 }
 
 void Simulation::build_wall_candidates() {
-  // histories of the touching wall contacts, by (id, wall, feature)
+  // the touching wall contacts, by (id, wall, feature), with their index in the old list
   std::vector<WallContactRecord> old;
-  for (const auto& c : wall_candidates_)
-    if (c.history.normal_force != 0 || c.history.max_overlap > 0) old.push_back(c);
+  for (std::size_t q = 0; q < wall_candidates_.size(); ++q)
+    if (wall_state_.active[q]) {
+      old.push_back(wall_candidates_[q]);
+      old.back().candidate = static_cast<std::uint32_t>(q);
+    }
   auto key_less = [](const WallContactRecord& a, const WallContactRecord& b) {
     return std::tie(a.id, a.wall, a.feature) < std::tie(b.id, b.wall, b.feature);
   };
   std::sort(old.begin(), old.end(), key_less);
-  wall_candidates_.clear();
+  std::vector<WallContactRecord> fresh;  // `candidate`: the old index whose state it continues
   wall_full_scan_.assign(walls.size(), 0);
   wall_travel_.assign(walls.size(), 0.0);
   std::vector<WallContact> found;
@@ -168,20 +184,24 @@ void Simulation::build_wall_candidates() {
     wall_full_scan_[w] =
         walls[w]->surface_moves() && norm2(walls[w]->kinematics.angular_velocity) > 0;
     for (std::uint32_t i = 0; i < p.size(); ++i) {
-      const std::size_t from = wall_candidates_.size();
-      add_wall_candidates(i, w, p.x[i], p.radius[i], found);
-      for (std::size_t k = from; k < wall_candidates_.size(); ++k) {
-        WallContactRecord& r = wall_candidates_[k];
+      const std::size_t from = fresh.size();
+      add_wall_candidates(i, w, p.x[i], p.radius[i], found, fresh);
+      for (std::size_t k = from; k < fresh.size(); ++k) {
+        WallContactRecord& r = fresh[k];
         auto it = std::lower_bound(old.begin(), old.end(), r, key_less);
-        if (it != old.end() && !key_less(r, *it)) r.history = it->history;
+        if (it != old.end() && !key_less(r, *it)) r.candidate = it->candidate;
       }
     }
   }
   // by particle (then wall, feature): lets the force loop split the list between threads
-  std::stable_sort(wall_candidates_.begin(), wall_candidates_.end(),
+  std::stable_sort(fresh.begin(), fresh.end(),
                    [](const WallContactRecord& a, const WallContactRecord& b) {
                      return a.particle < b.particle;
                    });
+  std::vector<std::uint32_t> state_from(fresh.size());
+  for (std::size_t q = 0; q < fresh.size(); ++q) state_from[q] = fresh[q].candidate;
+  wall_state_.gather(state_from);
+  wall_candidates_.swap(fresh);
 }
 
 void Simulation::particles_replaced(const std::vector<NewFragment>& fragments) {
@@ -222,20 +242,27 @@ void Simulation::particles_replaced(const std::vector<NewFragment>& fragments) {
   r_at_build_.swap(r_build);
   reach_tracked_.swap(tracked);
   nlist_.update_in_place(p, to_new, x_at_build_, r_at_build_);
+  pair_state_.gather(nlist_.kept_from());
   // wall candidates: kept ones remapped, each fragment's found at its reach sphere
   std::vector<WallContactRecord> kept;
-  for (const auto& c : wall_candidates_) {
+  std::vector<std::uint32_t> state_from;
+  for (std::size_t q = 0; q < wall_candidates_.size(); ++q) {
+    const WallContactRecord& c = wall_candidates_[q];
     const std::uint32_t s = c.particle < to_new.size() ? to_new[c.particle] : NeighborList::none;
     if (s == NeighborList::none) continue;
     WallContactRecord r = c;
     r.particle = s;
     kept.push_back(r);
+    state_from.push_back(static_cast<std::uint32_t>(q));
   }
-  wall_candidates_.swap(kept);
   std::vector<WallContact> found;
   for (std::size_t s = n_kept; s < p.size(); ++s)
     for (std::uint32_t w = 0; w < walls.size(); ++w)
-      add_wall_candidates(static_cast<std::uint32_t>(s), w, x_at_build_[s], r_at_build_[s], found);
+      add_wall_candidates(static_cast<std::uint32_t>(s), w, x_at_build_[s], r_at_build_[s], found,
+                          kept);
+  state_from.resize(kept.size(), NeighborList::none);
+  wall_candidates_.swap(kept);
+  wall_state_.gather(state_from);
   forces_cleared_ = false;
 }
 
@@ -288,15 +315,6 @@ struct ThreadTally {
   }
 };
 
-// What every contact records in its history after its forces are computed (breakage reads it).
-inline void record_loading(ContactHistory& h, double overlap, const ContactForces& out) {
-  if (overlap > h.max_overlap) {
-    h.max_overlap = static_cast<float>(overlap);
-    h.loading_work = static_cast<float>(out.normal_elastic_energy);
-  }
-  h.normal_force = static_cast<float>(out.elastic_normal_force);
-}
-
 // Splits [0, n) into nt ranges of about equal total weight; weight(k) is the cost of item k.
 template <class Weight>
 std::vector<std::size_t> balanced_split(std::size_t n, int nt, Weight weight) {
@@ -327,7 +345,8 @@ void Simulation::particle_particle_forces() {
   const int nt = npairs >= 2 * kParallelMin ? max_threads() : 1;
   const auto& rows = nlist_.rows();
   // balance by cost: a touching pair (contact law) costs several times a distance check
-  const auto& touching = nlist_.touching;
+  auto& state = pair_state_;
+  const auto& touching = state.active;
   const auto split =
       balanced_split(npairs, nt, [&](std::size_t k) { return 1.0 + 6.0 * touching[k]; });
   std::vector<std::uint32_t> owner_begin(static_cast<std::size_t>(nt) + 1, 0);
@@ -336,7 +355,9 @@ void Simulation::particle_particle_forces() {
     owner_begin[t] = split[t] < npairs ? nlist_.first[split[t]] : static_cast<std::uint32_t>(n);
   cross_.resize(static_cast<std::size_t>(nt));
   std::vector<ThreadTally> tally(static_cast<std::size_t>(nt));
-  const ContactLaw& contact_law = *law;
+  const ContactPipeline& pipeline = contacts_;
+  const Slots& slots = state.slots();
+  std::uint8_t* active = state.active.data();
 #pragma omp parallel num_threads(nt)
   {
     const int t = thread_id();
@@ -355,13 +376,10 @@ void Simulation::particle_particle_forces() {
       const double rsum = p.radius[i] + p.radius[j];
       const double dist2 = norm2(d);
       if (dist2 >= rsum * rsum) {
-        if (nlist_.touching[k]) {
-          nlist_.touching[k] = 0;
-          nlist_.history[k] = ContactHistory{};
-        }
+        if (active[k]) state.clear(k);  // the bodies separated: the contact's state is gone
         continue;
       }
-      nlist_.touching[k] = 1;
+      active[k] = 1;
       const double dist = std::sqrt(dist2);
       const Vec3 nrm = d / dist;
       const double overlap = rsum - dist;
@@ -377,12 +395,8 @@ void Simulation::particle_particle_forces() {
       ck.effective_mass = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
       ck.effective_inertia = p.inertia[i] * p.inertia[j] / (p.inertia[i] + p.inertia[j]);
       const PairParameters& pp = materials.pair(p.material[i], p.material[j]);
-      ContactHistory& h = nlist_.history[k];
       ContactForces out;
-      contact_law.compute(ck, pp, h, out);
-      if (cohesion) cohesion->compute(ck, pp, out);
-      if (rolling) rolling->compute(ck, pp, h, out);
-      record_loading(h, overlap, out);
+      pipeline.evaluate(ck, pp, StateRef{&slots, k}, out);
       tl.add(out);
       const Vec3 fc = out.normal_force * nrm + out.tangential_force;
       F[i] += fc;
@@ -428,7 +442,9 @@ void Simulation::particle_wall_forces() {
     std::vector<WallContactRecord> touching;
   };
   std::vector<WallTally> part(static_cast<std::size_t>(nt));
-  const ContactLaw& contact_law = *law;
+  const ContactPipeline& pipeline = contacts_;
+  auto& state = wall_state_;
+  const Slots& slots = state.slots();
 #pragma omp parallel num_threads(nt)
   {
     const int t = thread_id();
@@ -446,9 +462,10 @@ void Simulation::particle_wall_forces() {
       for (const auto& f : found)
         if (f.feature == c.feature || c.feature < 0) hit = &f;
       if (hit == nullptr || hit->overlap <= 0) {
-        c.history = ContactHistory{};
+        if (state.active[q]) state.clear(q);
         continue;
       }
+      state.active[q] = 1;
       const Vec3 nrm = hit->normal;
       const double overlap = hit->overlap;
       const double ri = p.radius[i] - overlap;
@@ -467,10 +484,7 @@ void Simulation::particle_wall_forces() {
       ck.effective_inertia = p.inertia[i];
       const PairParameters& pp = materials.pair(p.material[i], w.material);
       ContactForces out;
-      contact_law.compute(ck, pp, c.history, out);
-      if (cohesion) cohesion->compute(ck, pp, out);
-      if (rolling) rolling->compute(ck, pp, c.history, out);
-      record_loading(c.history, overlap, out);
+      pipeline.evaluate(ck, pp, StateRef{&slots, q}, out);
       const Vec3 fc = out.normal_force * nrm + out.tangential_force;
       p.f[i] += fc;
       p.t[i] += out.rolling_torque - ri * cross(nrm, out.tangential_force);
@@ -480,6 +494,7 @@ void Simulation::particle_wall_forces() {
       mine.energy.wall_work += dot(fc, vwall) * dt;  // power of the wall's force on the particle
       WallContactRecord rec = c;
       rec.feature = hit->feature;
+      rec.candidate = static_cast<std::uint32_t>(q);
       mine.touching.push_back(rec);
     }
   }
@@ -503,7 +518,7 @@ Observables Simulation::observe() const {
   o.time = time;
   o.step = step_count;
   o.particles = p.size();
-  for (auto t : nlist_.touching) o.contacts += t;
+  for (auto t : pair_state_.active) o.contacts += t;
   o.wall_contacts = wall_contacts_.size();
   for (std::size_t i = 0; i < p.size(); ++i) {
     o.kinetic_translational += 0.5 * p.mass[i] * norm2(p.v[i]);
@@ -533,14 +548,14 @@ void Simulation::save(Archive& a) const {
     a.put("fields/" + p.field_names()[k], p.field(k));
   a.put("pairs/first", nlist_.first);
   a.put("pairs/second", nlist_.second);
-  a.put("pairs/history", nlist_.history);
-  a.put("pairs/touching", nlist_.touching);
+  pair_state_.save(a, "pairs/state/");
   a.put("pairs/ids", nlist_.ids_at_build());
   a.put("pairs/large", nlist_.large());
   a.put("pairs/x_at_build", x_at_build_);
   a.put("pairs/r_at_build", r_at_build_);
   a.put("pairs/reach_tracked", reach_tracked_);
   a.put("walls/candidates", wall_candidates_);
+  wall_state_.save(a, "walls/state/");
   a.put("walls/travel", wall_travel_);
   a.put("walls/full_scan", wall_full_scan_);
   for (std::size_t k = 0; k < walls.size(); ++k) {
@@ -562,6 +577,7 @@ void Simulation::save(Archive& a) const {
 }
 
 void Simulation::load(const Archive& a) {
+  assemble_contacts();
   auto& p = particles;
   p.x = a.get<Vec3>("particles/x");
   p.v = a.get<Vec3>("particles/v");
@@ -578,13 +594,14 @@ void Simulation::load(const Archive& a) {
   for (std::size_t k = 0; k < p.field_names().size(); ++k)
     p.field(k) = a.get<double>("fields/" + p.field_names()[k]);
   nlist_.restore(a.get<std::uint32_t>("pairs/first"), a.get<std::uint32_t>("pairs/second"),
-                 a.get<ContactHistory>("pairs/history"), a.get<std::uint8_t>("pairs/touching"),
                  a.get<std::uint64_t>("pairs/ids"), a.get<std::uint8_t>("pairs/large"));
+  pair_state_.load(a, "pairs/state/", nlist_.size());
   x_at_build_ = a.get<Vec3>("pairs/x_at_build");
   r_at_build_ = a.get<double>("pairs/r_at_build");
   reach_tracked_ = a.get<std::uint32_t>("pairs/reach_tracked");
   if (x_at_build_.size() == p.size()) nlist_.rebuild_index(x_at_build_, r_at_build_, options.skin);
   wall_candidates_ = a.get<WallContactRecord>("walls/candidates");
+  wall_state_.load(a, "walls/state/", wall_candidates_.size());
   wall_travel_ = a.get<double>("walls/travel");
   wall_full_scan_ = a.get<std::uint8_t>("walls/full_scan");
   for (std::size_t k = 0; k < walls.size(); ++k) {

@@ -7,7 +7,9 @@
 
 #include "comminute/contact/cohesion.hpp"
 #include "comminute/contact/contact_law.hpp"
+#include "comminute/contact/contact_state.hpp"
 #include "comminute/contact/rolling_resistance.hpp"
+#include "comminute/engine/contact_pipeline.hpp"
 #include "comminute/engine/module.hpp"
 #include "comminute/geometry/wall.hpp"
 #include "comminute/neighbor/neighbor_list.hpp"
@@ -16,15 +18,15 @@
 
 namespace comminute {
 
-// A particle–wall contact: history keyed by particle id, wall and feature. wall_contacts() lists
-// those touching in the last force computation.
+// A particle–wall contact candidate, keyed by particle id, wall and feature; its state is in
+// wall_state() at the same index. wall_contacts() lists those touching in the last force
+// computation, with `candidate` pointing to their state.
 struct WallContactRecord {
   std::uint32_t particle = 0;  // current slot
   std::uint32_t wall = 0;
   std::int32_t feature = 0;
-  std::uint32_t unused = 0;  // explicit padding: checkpoints copy the bytes of this struct
-  std::uint64_t id = 0;      // particle id
-  ContactHistory history;
+  std::uint32_t candidate = 0;  // index in the candidate list (and wall_state())
+  std::uint64_t id = 0;         // particle id
 };
 
 // Running energy ledger (J), for the time-series output and conservation checks.
@@ -103,7 +105,13 @@ class Simulation {
 
   const NeighborList& pairs() const { return nlist_; }
   NeighborList& pairs() { return nlist_; }
+  // Per-pair state, indexed like pairs(); per wall-candidate state, indexed by
+  // WallContactRecord::candidate.
+  const ContactStateStore& pair_state() const { return pair_state_; }
+  const ContactStateStore& wall_state() const { return wall_state_; }
   const std::vector<WallContactRecord>& wall_contacts() const { return wall_contacts_; }
+  // The contact model (law, rolling, adhesion, loading record), assembled at setup or load.
+  const ContactPipeline& contacts() const { return contacts_; }
   Observables observe() const;
   // Smallest Rayleigh time over the particles (s): pi R sqrt(rho/G) / (0.1631 nu + 0.8766).
   double rayleigh_time() const;
@@ -113,19 +121,23 @@ class Simulation {
   void load(const Archive& a);
 
  private:
+  void assemble_contacts();
   void compute_forces();
   void particle_particle_forces();
   void particle_wall_forces();
   void rebuild();
   void build_wall_candidates();
   void add_wall_candidates(std::uint32_t i, std::uint32_t w, const Vec3& x, double r,
-                           std::vector<WallContact>& found);
+                           std::vector<WallContact>& found,
+                           std::vector<WallContactRecord>& into) const;
   void kick_drift();
   bool kick();
   [[noreturn]] void report_non_finite() const;
 
   NeighborList nlist_;
-  std::vector<WallContactRecord> wall_candidates_;  // near walls at the last build, with history
+  ContactPipeline contacts_;
+  ContactStateStore pair_state_, wall_state_;
+  std::vector<WallContactRecord> wall_candidates_;  // near walls at the last build
   std::vector<WallContactRecord> wall_contacts_;    // touching now
   std::vector<std::uint8_t> wall_full_scan_;        // per wall: surface moves, check every step
   std::vector<double> wall_travel_;                 // per wall: distance moved since the build

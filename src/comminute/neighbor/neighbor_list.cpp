@@ -14,19 +14,12 @@ void NeighborList::make_rows(std::size_t n) {
   for (std::size_t i = 0; i < n; ++i) row_[i + 1] += row_[i];
 }
 
-void NeighborList::build(const ParticleStore& p, double skin) {
-  // 1. keep the history of touching pairs: compacted to the front of `history` in place, with
-  //    their particle ids aside (no second copy of the histories: memory is the limit in dense
-  //    beds). Scratch arrays are members so that their capacity is reused between builds.
-  auto& saved = saved_;
-  saved.clear();
-  std::size_t kept = 0;
-  for (std::size_t k = 0; k < first.size(); ++k)
-    if (touching[k]) {
-      saved.push_back({ids_[first[k]], ids_[second[k]]});
-      history[kept++] = history[k];
-    }
-  history.resize(kept);
+void NeighborList::build(const ParticleStore& p, double skin,
+                         const std::vector<std::uint8_t>& keep) {
+  // 1. the ids of the pairs whose state is to be carried over
+  saved_.clear();
+  for (std::size_t k = 0; k < keep.size() && k < first.size(); ++k)
+    if (keep[k]) saved_.push_back({ids_[first[k]], ids_[second[k]], static_cast<std::uint32_t>(k)});
 
   const std::size_t n = p.size();
   ids_ = p.id;
@@ -34,9 +27,8 @@ void NeighborList::build(const ParticleStore& p, double skin) {
   first.clear();
   second.clear();
   if (n == 0) {
-    history.clear();
-    touching.clear();
     row_.assign(1, 0);
+    carry_ = {};
     return;
   }
 
@@ -110,17 +102,15 @@ void NeighborList::build(const ParticleStore& p, double skin) {
       at += tf[t].size();
     }
   }
-  const std::size_t total = first.size();
-  touching.assign(total, 0);
   make_rows(n);
-  transfer_history(p, total);
+  plan_carry(p);
   skin_ = skin;
   index_.adopt(std::move(small_grid), std::move(large_grid), !large_set.empty(), r_ref, r_max, n);
 }
 
-void NeighborList::transfer_history(const ParticleStore& p, std::size_t total) {
-  // 4. move the saved histories (history[0..m), ids in saved_) to their new pair positions
-  const std::size_t n = p.size(), m = saved_.size();
+void NeighborList::plan_carry(const ParticleStore& p) {
+  // 4. find the saved pairs in the new rows, by particle ids
+  const std::size_t n = p.size();
   auto& slot = slot_of_id_;  // slot of each id: a sorted (id, slot) table
   slot.resize(n);
   for (std::uint32_t i = 0; i < n; ++i) slot[i] = {p.id[i], i};
@@ -131,62 +121,27 @@ void NeighborList::transfer_history(const ParticleStore& p, std::size_t total) {
     out = it->second;
     return true;
   };
-  auto& pos = new_position_;
-  pos.assign(m, none);
-  for (std::size_t e = 0; e < m; ++e) {
+  carry_.from.clear();
+  carry_.to.clear();
+  carry_.reversed.clear();
+  for (const auto& e : saved_) {
     std::uint32_t a = 0, b = 0;
-    if (!find_slot(saved_[e].a, a) || !find_slot(saved_[e].b, b)) continue;  // removed particle
-    // owner: the large one of a mixed pair, else the smaller slot (pairs added by
-    // apply_replacement are owned by the fragment: look in the other row too)
+    if (!find_slot(e.a, a) || !find_slot(e.b, b)) continue;  // removed particle
+    // owner: the large one of a mixed pair, else the smaller slot (pairs added by an in-place
+    // update are owned by the fragment: look in the other row too)
     const std::uint32_t saved_owner = a;
     if (large_[a] == large_[b] ? b < a : large_[b] != 0) std::swap(a, b);
-    for (int attempt = 0; attempt < 2 && pos[e] == none; ++attempt, std::swap(a, b))
+    bool found = false;
+    for (int attempt = 0; attempt < 2 && !found; ++attempt, std::swap(a, b))
       for (std::uint32_t k = row_[a]; k < row_[a + 1]; ++k)
         if (second[k] == b) {
-          pos[e] = k;
-          if (a != saved_owner) {  // the history's orientation follows the owner: flip it
-            history[e].tangential_spring = -history[e].tangential_spring;
-            history[e].rolling_spring = -history[e].rolling_spring;
-          }
+          carry_.from.push_back(e.pair);
+          carry_.to.push_back(k);
+          carry_.reversed.push_back(a != saved_owner ? 1 : 0);
+          found = true;
           break;
         }
   }
-  // order the kept entries by new position (dropped ones last) with an in-place permutation
-  auto& order = order_;
-  order.resize(m);
-  for (std::uint32_t e = 0; e < m; ++e) order[e] = e;
-  std::sort(order.begin(), order.end(), [&pos](std::uint32_t x, std::uint32_t y) {
-    return pos[x] < pos[y];  // none (dropped) sorts last
-  });
-  std::vector<bool> done(m, false);
-  for (std::size_t r = 0; r < m; ++r) {  // history'[r] = history[order[r]], cycle by cycle
-    if (done[r]) continue;
-    const ContactHistory first_of_cycle = history[r];
-    std::size_t j = r;
-    while (true) {
-      done[j] = true;
-      const std::size_t from = order[j];
-      if (from == r) {
-        history[j] = first_of_cycle;
-        break;
-      }
-      history[j] = history[from];
-      j = from;
-    }
-  }
-  std::size_t valid = 0;
-  while (valid < m && pos[order[valid]] != none) ++valid;
-  if (history.capacity() < total) history.reserve(total + total / 16);
-  history.resize(total);
-  // scatter back to front: sorted distinct positions satisfy pos >= index, so nothing unread is
-  // overwritten; then clear every slot that holds no touching history
-  for (std::size_t r = valid; r-- > 0;) {
-    const std::uint32_t k = pos[order[r]];
-    history[k] = history[r];
-    touching[k] = 1;
-  }
-  for (std::size_t k = 0; k < total; ++k)
-    if (!touching[k]) history[k] = ContactHistory{};
 }
 
 std::vector<std::uint32_t> NeighborList::slots_after_removal(const ParticleStore& p) const {
@@ -230,23 +185,19 @@ void NeighborList::update_in_place(const ParticleStore& p, const std::vector<std
       for (int u = 0; u < nt; ++u) kept[u + 1] += kept[u];
       spare_first_.resize(kept[nt]);
       spare_second_.resize(kept[nt]);
-      spare_history_.resize(kept[nt]);
-      spare_touching_.resize(kept[nt]);
+      kept_from_.resize(kept[nt]);
     }
     std::size_t w = kept[static_cast<std::size_t>(t)];
     for (std::size_t k = k0; k < k1; ++k) {
       if (!keeps(k)) continue;  // a pair of a removed particle
       spare_first_[w] = to_new[first[k]];
       spare_second_[w] = to_new[second[k]];
-      spare_history_[w] = history[k];
-      spare_touching_[w] = touching[k];
+      kept_from_[w] = static_cast<std::uint32_t>(k);
       ++w;
     }
   }
   first.swap(spare_first_);
   second.swap(spare_second_);
-  history.swap(spare_history_);
-  touching.swap(spare_touching_);
   index_.remap(to_new);
   const std::size_t n_kept = static_cast<std::size_t>(
       std::count_if(to_new.begin(), to_new.end(), [](std::uint32_t s) { return s != none; }));
@@ -264,8 +215,7 @@ void NeighborList::update_in_place(const ParticleStore& p, const std::vector<std
     for (std::uint32_t j : row) {
       first.push_back(fs);
       second.push_back(j);
-      history.push_back({});
-      touching.push_back(0);
+      kept_from_.push_back(none);
     }
     index_.insert(fs, x_build[s], r_build[s]);
   }
@@ -293,12 +243,9 @@ std::vector<std::size_t> NeighborList::cell_order(const ParticleStore& p, double
 }
 
 void NeighborList::restore(std::vector<std::uint32_t> f, std::vector<std::uint32_t> s,
-                           std::vector<ContactHistory> h, std::vector<std::uint8_t> t,
                            std::vector<std::uint64_t> ids, std::vector<std::uint8_t> large) {
   first = std::move(f);
   second = std::move(s);
-  history = std::move(h);
-  touching = std::move(t);
   ids_ = std::move(ids);
   large_ = std::move(large);
   make_rows(ids_.size());

@@ -1,8 +1,10 @@
 #pragma once
 // Verlet neighbour list on cell grids: a half list of candidate pairs within r_i + r_j + skin,
 // rebuilt when some particle has moved more than skin/2 since the last build (or after
-// insertion/removal). Stored as pair arrays (first, second, history) grouped by `first`, so hot
-// loops run over plain arrays. Contact history is carried across rebuilds by particle ids.
+// insertion/removal). Stored as pair arrays (first, second) grouped by `first`, so hot loops run
+// over plain arrays. The list knows geometry only: per-contact state lives in the engine's
+// contact-state store, which follows the pairs through the carry plans each build and in-place
+// update leave behind (pairs matched by particle ids).
 //
 // Polydisperse beds: particles with radius <= r_ref (the 90th percentile, or all of them when
 // r_max <= 1.5 r_ref) are binned in a grid of edge 2 r_ref + skin and searched with the 27-cell
@@ -12,7 +14,6 @@
 #include <utility>
 #include <vector>
 
-#include "comminute/contact/contact_law.hpp"
 #include "comminute/neighbor/reach_index.hpp"
 #include "comminute/particles/particle_store.hpp"
 
@@ -20,26 +21,34 @@ namespace comminute {
 
 class NeighborList {
  public:
-  std::vector<std::uint32_t> first;     // slot of the pair's owner
-  std::vector<std::uint32_t> second;    // slot of the other particle
-  std::vector<ContactHistory> history;  // per pair
-  std::vector<std::uint8_t> touching;   // 1 when the pair overlapped in the last force step
+  std::vector<std::uint32_t> first;   // slot of the pair's owner
+  std::vector<std::uint32_t> second;  // slot of the other particle
 
   std::size_t size() const { return first.size(); }
 
-  // Builds the list for the current positions and moves the history of touching pairs over from
-  // the previous list, matched by particle ids.
-  void build(const ParticleStore& p, double skin);
+  // Builds the list for the current positions. The pairs of the previous list flagged in `keep`
+  // (by pair index; may be empty) are found again by their particle ids: carried() then tells
+  // where each went.
+  void build(const ParticleStore& p, double skin, const std::vector<std::uint8_t>& keep = {});
+  // The carry plan of the last build: old pair from[e] is new pair to[e], listed the other way
+  // round (owner and other swapped) when reversed[e]. Kept pairs of removed particles are absent.
+  struct Carry {
+    std::vector<std::uint32_t> from, to;
+    std::vector<std::uint8_t> reversed;
+  };
+  const Carry& carried() const { return carry_; }
   // In-place update after compact() removed particles (keeping the order of the others) and new
   // ones were appended, without a rebuild. slots_after_removal(): old slot -> new slot (none =
   // removed), empty when `p` does not start with the list's kept particles in order.
   std::vector<std::uint32_t> slots_after_removal(const ParticleStore& p) const;
-  // Drops the pairs of removed particles, remaps slots (histories kept) and gives each appended
+  // Drops the pairs of removed particles, remaps slots (order kept) and gives each appended
   // particle s every partner j whose reach sphere at build lies within skin of its own:
   // |x_build[s] - x_build[j]| < r_build[s] + r_build[j] + skin (arrays by new slot; an appended
-  // particle's reach sphere is chosen by the caller, e.g. its final radius).
+  // particle's reach sphere is chosen by the caller, e.g. its final radius). kept_from() then
+  // gives, for each new pair, the old pair it continues (none: a new pair).
   void update_in_place(const ParticleStore& p, const std::vector<std::uint32_t>& to_new,
                        const std::vector<Vec3>& x_build, const std::vector<double>& r_build);
+  const std::vector<std::uint32_t>& kept_from() const { return kept_from_; }
   bool can_update_in_place() const { return index_.valid(); }
   // Re-creates the spatial index of the reach spheres after restore() (checkpoints).
   void rebuild_index(const std::vector<Vec3>& x_build, const std::vector<double>& r_build,
@@ -51,28 +60,27 @@ class NeighborList {
   const std::vector<std::uint64_t>& ids_at_build() const { return ids_; }
   // Checkpoint support: restore a list exactly as saved.
   void restore(std::vector<std::uint32_t> f, std::vector<std::uint32_t> s,
-               std::vector<ContactHistory> h, std::vector<std::uint8_t> t,
                std::vector<std::uint64_t> ids, std::vector<std::uint8_t> large);
   const std::vector<std::uint8_t>& large() const { return large_; }
   // CSR offsets: the pairs owned by slot i are [rows()[i], rows()[i + 1]).
   const std::vector<std::uint32_t>& rows() const { return row_; }
 
  private:
-  std::vector<std::uint64_t> ids_;   // p.id at build
-  std::vector<std::uint8_t> large_;  // 1 for particles in the large-particle grid
-  std::vector<std::uint32_t> row_;   // CSR offsets of rows by owner slot (size n+1)
-  ReachIndex index_;                 // reach spheres at build, for in-place updates
-  double skin_ = 0;                  // m, of the last build
+  std::vector<std::uint64_t> ids_;        // p.id at build
+  std::vector<std::uint8_t> large_;       // 1 for particles in the large-particle grid
+  std::vector<std::uint32_t> row_;        // CSR offsets of rows by owner slot (size n+1)
+  ReachIndex index_;                      // reach spheres at build, for in-place updates
+  double skin_ = 0;                       // m, of the last build
+  Carry carry_;                           // of the last build
+  std::vector<std::uint32_t> kept_from_;  // of the last in-place update
   // scratch reused between builds
-  void transfer_history(const ParticleStore& p, std::size_t total);
+  void plan_carry(const ParticleStore& p);
   struct SavedIds {
-    std::uint64_t a, b;  // ids of owner and other of a touching pair
+    std::uint64_t a, b;  // ids of owner and other of a kept pair
+    std::uint32_t pair;  // its index in the old list
   };
   std::vector<SavedIds> saved_;
-  std::vector<std::uint32_t> new_position_, order_;
   std::vector<std::uint32_t> spare_first_, spare_second_;  // in-place updates copy into these
-  std::vector<ContactHistory> spare_history_;
-  std::vector<std::uint8_t> spare_touching_;
   std::vector<std::vector<std::uint32_t>> thread_first_, thread_second_;
   std::vector<std::pair<std::uint64_t, std::uint32_t>> slot_of_id_;
   void make_rows(std::size_t n);

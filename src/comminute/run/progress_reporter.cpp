@@ -25,7 +25,7 @@ std::string hms(double s) {
 
 std::size_t touching_contacts(const Simulation& sim) {
   std::size_t n = sim.wall_contacts().size();
-  for (auto t : sim.pairs().touching) n += t;
+  for (auto t : sim.pair_state().active) n += t;
   return n;
 }
 

@@ -69,25 +69,18 @@ void read_interactions(const CaseTable& root, Simulation& sim) {
   }
 }
 
+// [contact]: the law, rolling resistance and adhesion by name; each reads its own keys.
 void read_contact(const CaseTable& root, Simulation& sim) {
   const CaseTable c = root.table("contact");
-  ContactOptions opt;
-  const std::string model = c.choice("model", ContactLawRegistry::names());
-  opt.tangential_damping = c.boolean("tangential_damping", true);
-  if (model == "linear_spring_dashpot") {
-    opt.linear_normal_stiffness = c.number("normal_stiffness", kPositive);
-    opt.linear_tangential_ratio =
-        c.number("tangential_stiffness_ratio", Limits{0.0, 1.0, true, false}, 2.0 / 7.0);
-  }
-  sim.law = ContactLawRegistry::create(model, opt);
+  sim.law = ContactLawRegistry::create(c.choice("model", ContactLawRegistry::names()), c);
   std::vector<std::string> rolling = RollingResistanceRegistry::names();
   rolling.insert(rolling.begin(), "none");
   const std::string r = c.choice("rolling", rolling, "none");
-  if (r != "none") sim.rolling = RollingResistanceRegistry::create(r);
+  if (r != "none") sim.rolling = RollingResistanceRegistry::create(r, c);
   std::vector<std::string> coh = CohesionRegistry::names();
   coh.insert(coh.begin(), "none");
   const std::string h = c.choice("cohesion", coh, "none");
-  if (h != "none") sim.cohesion = CohesionRegistry::create(h);
+  if (h != "none") sim.cohesion = CohesionRegistry::create(h, c);
 }
 
 Region read_region(const CaseTable& t) {
@@ -243,18 +236,13 @@ DemCase build_dem_case(const CaseTable& root) {
     out.time_step_note = fmt::format("time step {:.4g} s = {:.0f} % of the Rayleigh time {:.4g} s",
                                      sim.dt, 100 * fraction, t_rayleigh);
   }
-  if (sim.law->name() == "linear_spring_dashpot") {
-    // linear contact: resolve the contact time pi sqrt(m*/k) of the lightest pair with >= 10 steps
-    const double density = sim.materials.material(smallest.material).density;
-    const double mstar = 0.5 * density * units::sphere_volume(smallest.radius);
-    const double tc =
-        units::pi * std::sqrt(mstar / sim.law->normal_stiffness({}, smallest.radius, mstar, 0));
-    if (sim.dt > tc / 10)
-      out.warnings.push_back(fmt::format(
-          "the time step {:.4g} s resolves the linear contact time {:.4g} s with fewer than 10 "
-          "steps",
-          sim.dt, tc));
-  }
+  // the law's own limit for the lightest pair
+  const double mass =
+      sim.materials.material(smallest.material).density * units::sphere_volume(smallest.radius);
+  const StepLimit limit = sim.law->step_limit(
+      sim.materials.pair(smallest.material, smallest.material), smallest.radius, mass);
+  if (sim.dt > limit.dt)
+    out.warnings.push_back(fmt::format("the time step {:.4g} s {}", sim.dt, limit.reason));
   return out;
 }
 

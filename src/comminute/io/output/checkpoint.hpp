@@ -17,7 +17,7 @@
 
 namespace comminute::io {
 
-inline constexpr int checkpoint_format_version = 1;
+inline constexpr int checkpoint_format_version = 2;  // 2: per-contact state by slot
 
 struct CheckpointInfo {
   int format_version = checkpoint_format_version;

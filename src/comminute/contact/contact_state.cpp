@@ -1,0 +1,186 @@
+#include "comminute/contact/contact_state.hpp"
+
+#include <fmt/format.h>
+
+#include "comminute/core/error.hpp"
+#include "comminute/core/parallel.hpp"
+
+namespace comminute {
+
+namespace {
+
+template <class T>
+T swapped(const T& v, SwapRule rule) {
+  return rule == SwapRule::negate ? -v : v;
+}
+}  // namespace
+
+template <class T>
+SlotId ContactStateStore::declare(std::vector<Column<T>>& cols, const std::string& name,
+                                  SwapRule swap) {
+  for (SlotId s = 0; s < cols.size(); ++s)
+    if (cols[s].name == name) {
+      if (cols[s].swap != swap)
+        throw Error(
+            fmt::format("contact-state slot '{}' declared twice with different rules", name));
+      return s;
+    }
+  for (const auto& other : slot_names())
+    if (other == name)
+      throw Error(fmt::format("contact-state slot '{}' declared twice with different types", name));
+  if (cols.size() == Slots::max_slots)
+    throw Error(fmt::format("contact-state slot '{}': more than {} slots of one kind", name,
+                            Slots::max_slots));
+  cols.push_back({name, swap, std::vector<T>(size(), T{}), {}});
+  refresh();
+  return static_cast<SlotId>(cols.size() - 1);
+}
+
+SlotId ContactStateStore::declare_vec3(const std::string& name, SwapRule swap) {
+  return declare(vec3_, name, swap);
+}
+SlotId ContactStateStore::declare_f32(const std::string& name, SwapRule swap) {
+  return declare(f32_, name, swap);
+}
+SlotId ContactStateStore::declare_f64(const std::string& name, SwapRule swap) {
+  return declare(f64_, name, swap);
+}
+
+namespace {
+template <class Cols>
+SlotId find_slot(const Cols& cols, const std::string& name) {
+  for (SlotId s = 0; s < cols.size(); ++s)
+    if (cols[s].name == name) return s;
+  throw Error(fmt::format("no contact-state slot '{}' is declared", name));
+}
+}  // namespace
+
+SlotId ContactStateStore::vec3_slot(const std::string& name) const {
+  return find_slot(vec3_, name);
+}
+SlotId ContactStateStore::f32_slot(const std::string& name) const {
+  return find_slot(f32_, name);
+}
+
+void ContactStateStore::refresh() {
+  for (std::size_t s = 0; s < vec3_.size(); ++s) slots_.vec3[s] = vec3_[s].data.data();
+  for (std::size_t s = 0; s < f32_.size(); ++s) slots_.f32[s] = f32_[s].data.data();
+  for (std::size_t s = 0; s < f64_.size(); ++s) slots_.f64[s] = f64_[s].data.data();
+}
+
+ContactScratch::ContactScratch() {
+  for (std::size_t s = 0; s < Slots::max_slots; ++s) {
+    slots_.vec3[s] = &vec3_[s];
+    slots_.f32[s] = &f32_[s];
+    slots_.f64[s] = &f64_[s];
+  }
+}
+
+ContactScratch::ContactScratch(const ContactStateStore& store, std::size_t k) : ContactScratch() {
+  for (std::size_t s = 0; s < store.vec3_.size(); ++s) vec3_[s] = store.vec3_[s].data[k];
+  for (std::size_t s = 0; s < store.f32_.size(); ++s) f32_[s] = store.f32_[s].data[k];
+  for (std::size_t s = 0; s < store.f64_.size(); ++s) f64_[s] = store.f64_[s].data[k];
+}
+
+void ContactStateStore::clear(std::size_t k) {
+  active[k] = 0;
+  for (auto& c : vec3_) c.data[k] = Vec3{};
+  for (auto& c : f32_) c.data[k] = 0.0f;
+  for (auto& c : f64_) c.data[k] = 0.0;
+}
+
+namespace {
+// Column c of the new list: fresh everywhere but at to[e], which takes old from[e]. The carried
+// values are gathered first, so only they are held twice, not the whole column.
+template <class T>
+void carry_column(std::vector<T>& data, SwapRule rule, const std::vector<std::uint32_t>& from,
+                  const std::vector<std::uint32_t>& to, const std::vector<std::uint8_t>& reversed,
+                  std::size_t size) {
+  std::vector<T> kept(from.size());
+  for (std::size_t e = 0; e < from.size(); ++e)
+    kept[e] = reversed[e] ? swapped(data[from[e]], rule) : data[from[e]];
+  data.assign(size, T{});
+  for (std::size_t e = 0; e < from.size(); ++e) data[to[e]] = kept[e];
+}
+
+template <class T>
+void gather_column(std::vector<T>& data, std::vector<T>& spare,
+                   const std::vector<std::uint32_t>& from, T fresh) {
+  const std::size_t n = from.size();
+  spare.resize(n);
+  const int nt = n >= 16384 ? max_threads() : 1;
+#pragma omp parallel for schedule(static) num_threads(nt)
+  for (std::size_t k = 0; k < n; ++k)
+    spare[k] = from[k] == ContactStateStore::none ? fresh : data[from[k]];
+  data.swap(spare);
+}
+}  // namespace
+
+void ContactStateStore::carry(const std::vector<std::uint32_t>& from,
+                              const std::vector<std::uint32_t>& to,
+                              const std::vector<std::uint8_t>& reversed, std::size_t size) {
+  for (auto& c : vec3_) carry_column(c.data, c.swap, from, to, reversed, size);
+  for (auto& c : f32_) carry_column(c.data, c.swap, from, to, reversed, size);
+  for (auto& c : f64_) carry_column(c.data, c.swap, from, to, reversed, size);
+  active.assign(size, 0);
+  for (std::uint32_t k : to) active[k] = 1;
+  refresh();
+}
+
+void ContactStateStore::gather(const std::vector<std::uint32_t>& from) {
+  for (auto& c : vec3_) gather_column(c.data, c.spare, from, Vec3{});
+  for (auto& c : f32_) gather_column(c.data, c.spare, from, 0.0f);
+  for (auto& c : f64_) gather_column(c.data, c.spare, from, 0.0);
+  gather_column(active, spare_active_, from, std::uint8_t{0});
+  refresh();
+}
+
+ContactStateStore ContactStateStore::same_layout() const {
+  ContactStateStore s;
+  for (const auto& c : vec3_) s.vec3_.push_back({c.name, c.swap, {}, {}});
+  for (const auto& c : f32_) s.f32_.push_back({c.name, c.swap, {}, {}});
+  for (const auto& c : f64_) s.f64_.push_back({c.name, c.swap, {}, {}});
+  s.refresh();
+  return s;
+}
+
+std::size_t ContactStateStore::bytes_per_contact() const {
+  return vec3_.size() * sizeof(Vec3) + f32_.size() * sizeof(float) + f64_.size() * sizeof(double) +
+         sizeof(std::uint8_t);
+}
+
+std::vector<std::string> ContactStateStore::slot_names() const {
+  std::vector<std::string> out;
+  for (const auto& c : vec3_) out.push_back(c.name);
+  for (const auto& c : f32_) out.push_back(c.name);
+  for (const auto& c : f64_) out.push_back(c.name);
+  return out;
+}
+
+void ContactStateStore::save(Archive& a, const std::string& prefix) const {
+  for (const auto& c : vec3_) a.put(prefix + c.name, c.data);
+  for (const auto& c : f32_) a.put(prefix + c.name, c.data);
+  for (const auto& c : f64_) a.put(prefix + c.name, c.data);
+  a.put(prefix + "active", active);
+}
+
+namespace {
+template <class T>
+void load_column(const Archive& a, const std::string& entry, std::size_t size,
+                 std::vector<T>& out) {
+  out = a.get<T>(entry);
+  if (out.size() != size)
+    throw Error(fmt::format("checkpoint entry '{}' holds {} contacts, the contact list {}", entry,
+                            out.size(), size));
+}
+}  // namespace
+
+void ContactStateStore::load(const Archive& a, const std::string& prefix, std::size_t size) {
+  for (auto& c : vec3_) load_column(a, prefix + c.name, size, c.data);
+  for (auto& c : f32_) load_column(a, prefix + c.name, size, c.data);
+  for (auto& c : f64_) load_column(a, prefix + c.name, size, c.data);
+  load_column(a, prefix + "active", size, active);
+  refresh();
+}
+
+}  // namespace comminute

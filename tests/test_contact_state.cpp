@@ -1,0 +1,107 @@
+// The engine's per-contact state store: slots declared by the sub-models, carried with their
+// swap rules when the neighbour list is rebuilt, gathered on in-place updates, checkpointed.
+#include <gtest/gtest.h>
+
+#include "comminute/contact/contact_state.hpp"
+#include "comminute/core/case_table.hpp"
+#include "comminute/core/error.hpp"
+#include "comminute/engine/contact_pipeline.hpp"
+
+using namespace comminute;
+
+namespace {
+// A store with a displacement-like slot (negates on swap) and a magnitude (kept), 4 contacts
+// holding recognisable values.
+struct Filled {
+  ContactStateStore s;
+  SlotId spring, overlap;
+  Filled() {
+    spring = s.declare_vec3("spring", SwapRule::negate);
+    overlap = s.declare_f32("overlap", SwapRule::keep);
+    s.carry({}, {}, {}, 4);
+    for (std::size_t k = 0; k < 4; ++k) {
+      s.at(k).vec3(spring) = {1.0 + static_cast<double>(k), 2.0, 3.0};
+      s.at(k).f32(overlap) = 0.5f + static_cast<float>(k);
+      s.active[k] = 1;
+    }
+  }
+};
+}  // namespace
+
+TEST(ContactState, CarryAppliesEachSlotsSwapRule) {
+  Filled f;
+  // old 2 -> new 0 (listed the other way round), old 3 -> new 4; the rest is new
+  f.s.carry({2, 3}, {0, 4}, {1, 0}, 6);
+  ASSERT_EQ(f.s.size(), 6u);
+  EXPECT_EQ(f.s.at(0).vec3(f.spring), (Vec3{-3.0, -2.0, -3.0}));  // negated: i and j swapped
+  EXPECT_EQ(f.s.at(0).f32(f.overlap), 2.5f);                      // a magnitude is kept
+  EXPECT_EQ(f.s.at(4).vec3(f.spring), (Vec3{4.0, 2.0, 3.0}));
+  for (std::size_t k : {1, 2, 3, 5}) {
+    EXPECT_EQ(f.s.at(k).vec3(f.spring), Vec3{}) << k;
+    EXPECT_EQ(f.s.at(k).f32(f.overlap), 0.0f) << k;
+    EXPECT_EQ(f.s.active[k], 0) << k;
+  }
+  EXPECT_EQ(f.s.active[0] + f.s.active[4], 2);
+}
+
+TEST(ContactState, GatherKeepsOrderAndStartsNewContactsFresh) {
+  Filled f;
+  f.s.gather({1, 3, ContactStateStore::none});
+  ASSERT_EQ(f.s.size(), 3u);
+  EXPECT_EQ(f.s.at(0).vec3(f.spring).x, 2.0);
+  EXPECT_EQ(f.s.at(1).vec3(f.spring).x, 4.0);
+  EXPECT_EQ(f.s.at(2).vec3(f.spring), Vec3{});
+  EXPECT_EQ(f.s.active[2], 0);
+  f.s.clear(0);
+  EXPECT_EQ(f.s.at(0).f32(f.overlap), 0.0f);
+  EXPECT_EQ(f.s.active[0], 0);
+}
+
+TEST(ContactState, ScratchCopiesOneContactAndLeavesTheStoreAlone) {
+  Filled f;
+  const ContactScratch copy(f.s, 1);
+  copy.ref().vec3(f.spring) = {9, 9, 9};
+  EXPECT_EQ(f.s.at(1).vec3(f.spring), (Vec3{2.0, 2.0, 3.0}));
+  EXPECT_EQ(ContactScratch{}.ref().f32(f.overlap), 0.0f);
+}
+
+TEST(ContactState, CheckpointRoundTripsAndRefusesAnotherListSize) {
+  Filled f;
+  Archive a;
+  f.s.save(a, "pairs/state/");
+  ContactStateStore back = f.s.same_layout();
+  back.load(a, "pairs/state/", 4);
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ(back.at(k).vec3(f.spring), f.s.at(k).vec3(f.spring));
+    EXPECT_EQ(back.at(k).f32(f.overlap), f.s.at(k).f32(f.overlap));
+  }
+  ContactStateStore wrong = f.s.same_layout();
+  EXPECT_THROW(wrong.load(a, "pairs/state/", 5), Error);
+}
+
+TEST(ContactState, ADeclarationClashIsRefused) {
+  ContactStateStore s;
+  const SlotId a = s.declare_vec3("spring", SwapRule::negate);
+  EXPECT_EQ(s.declare_vec3("spring", SwapRule::negate), a);  // the same slot, asked twice
+  EXPECT_THROW(s.declare_vec3("spring", SwapRule::keep), Error);
+  EXPECT_THROW(s.declare_f32("spring", SwapRule::negate), Error);
+}
+
+TEST(ContactState, BytesPerContactFollowTheSubModels) {
+  // Hertz–Mindlin keeps its tangential spring (24 B) and the active flag (1 B); EPSD rolling adds
+  // its spring (24 B); breakage's loading record three floats (12 B). The history struct these
+  // replace held all of them in every contact: 64 B + 1 B flag.
+  const CaseFile none = CaseFile::parse("");
+  auto law = ContactLawRegistry::create("hertz_mindlin", none.root());
+  auto rolling = RollingResistanceRegistry::create("epsd", none.root());
+  ContactPipeline plain;
+  EXPECT_EQ(plain.assemble(*law, nullptr, nullptr).bytes_per_contact(), 25u);
+  ContactPipeline with_rolling;
+  EXPECT_EQ(with_rolling.assemble(*law, rolling.get(), nullptr).bytes_per_contact(), 49u);
+  ContactPipeline breakage;
+  breakage.require_loading_record();
+  EXPECT_EQ(breakage.assemble(*law, nullptr, nullptr).bytes_per_contact(), 37u);
+  EXPECT_EQ(breakage.layout().slot_names(),
+            (std::vector<std::string>{"tangential_spring", "loading_max_overlap", "loading_work",
+                                      "loading_normal_force"}));
+}

@@ -1,6 +1,9 @@
 #pragma once
-// The DEM engine: particles, materials, walls, one contact law, gravity, modules and the time
-// loop (velocity Verlet for translation and rotation).
+// The DEM engine: particles, materials, walls, one contact model, gravity, modules and the time
+// loop. The loop delegates to collaborators that own their state: the integrator (velocity
+// Verlet), the pair tracker (neighbour list, wall candidates, rebuild trigger, in-place updates),
+// the contact pipeline and the pair and wall force loops; per-contact state is in two stores the
+// engine owns.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -10,32 +13,18 @@
 #include "comminute/contact/contact_state.hpp"
 #include "comminute/contact/rolling_resistance.hpp"
 #include "comminute/engine/contact_pipeline.hpp"
+#include "comminute/engine/energy_tally.hpp"
 #include "comminute/engine/module.hpp"
+#include "comminute/engine/pair_force_loop.hpp"
+#include "comminute/engine/pair_tracker.hpp"
+#include "comminute/engine/wall_contact.hpp"
+#include "comminute/engine/wall_force_loop.hpp"
 #include "comminute/geometry/wall.hpp"
 #include "comminute/neighbor/neighbor_list.hpp"
 #include "comminute/particles/material.hpp"
 #include "comminute/particles/particle_store.hpp"
 
 namespace comminute {
-
-// A particle–wall contact candidate, keyed by particle id, wall and feature; its state is in
-// wall_state() at the same index. wall_contacts() lists those touching in the last force
-// computation, with `candidate` pointing to their state.
-struct WallContactRecord {
-  std::uint32_t particle = 0;  // current slot
-  std::uint32_t wall = 0;
-  std::int32_t feature = 0;
-  std::uint32_t candidate = 0;  // index in the candidate list (and wall_state())
-  std::uint64_t id = 0;         // particle id
-};
-
-// Running energy ledger (J), for the time-series output and conservation checks.
-struct EnergyLedger {
-  double damping = 0;    // dissipated by normal/tangential dashpots
-  double friction = 0;   // dissipated by sliding and rolling friction
-  double removed = 0;    // taken out by modules (breakage, particle removal), see their logs
-  double wall_work = 0;  // work done on the particles by moving walls
-};
 
 struct Observables {
   double time = 0;
@@ -48,17 +37,6 @@ struct Observables {
   double potential_gravity = 0;      // J, relative to z = 0 along -gravity
   double elastic = 0;                // J, stored in contacts
   EnergyLedger ledger;
-};
-
-// A fragment appended by a breakage module: its id and the radius it will grow to.
-struct NewFragment {
-  std::uint64_t id = 0;
-  double final_radius = 0;  // m
-};
-
-struct SimulationOptions {
-  double skin = 0;      // m, Verlet skin (0: 0.2 x mean diameter at the first build with particles)
-  int sort_every = 20;  // re-sort particles by cell every this many list rebuilds (0: never)
 };
 
 class Simulation {
@@ -88,7 +66,7 @@ class Simulation {
   void step();
   // Forces the neighbour list to be rebuilt before the next force computation.
   void particles_changed() {
-    need_rebuild_ = true;
+    tracker_.invalidate();
     forces_cleared_ = false;
   }
   // After compact() removed broken parents and their fragments were appended: updates the
@@ -103,8 +81,8 @@ class Simulation {
   // call particles_changed().
   double reach_margin(std::size_t i) const;
 
-  const NeighborList& pairs() const { return nlist_; }
-  NeighborList& pairs() { return nlist_; }
+  const NeighborList& pairs() const { return tracker_.pairs(); }
+  NeighborList& pairs() { return tracker_.pairs(); }
   // Per-pair state, indexed like pairs(); per wall-candidate state, indexed by
   // WallContactRecord::candidate.
   const ContactStateStore& pair_state() const { return pair_state_; }
@@ -115,7 +93,7 @@ class Simulation {
   Observables observe() const;
   // Smallest Rayleigh time over the particles (s): pi R sqrt(rho/G) / (0.1631 nu + 0.8766).
   double rayleigh_time() const;
-  std::uint64_t neighbor_rebuilds() const { return rebuilds_; }
+  std::uint64_t neighbor_rebuilds() const { return tracker_.rebuilds(); }
 
   void save(Archive& a) const;
   void load(const Archive& a);
@@ -123,41 +101,17 @@ class Simulation {
  private:
   void assemble_contacts();
   void compute_forces();
-  void particle_particle_forces();
-  void particle_wall_forces();
-  void rebuild();
-  void build_wall_candidates();
-  void add_wall_candidates(std::uint32_t i, std::uint32_t w, const Vec3& x, double r,
-                           std::vector<WallContact>& found,
-                           std::vector<WallContactRecord>& into) const;
-  void kick_drift();
-  bool kick();
   [[noreturn]] void report_non_finite() const;
 
-  NeighborList nlist_;
   ContactPipeline contacts_;
   ContactStateStore pair_state_, wall_state_;
-  std::vector<WallContactRecord> wall_candidates_;  // near walls at the last build
-  std::vector<WallContactRecord> wall_contacts_;    // touching now
-  std::vector<std::uint8_t> wall_full_scan_;        // per wall: surface moves, check every step
-  std::vector<double> wall_travel_;                 // per wall: distance moved since the build
-  // Reach at the last build: a particle's pairs cover every sphere within skin of the sphere
-  // (x_at_build_, r_at_build_); fragments appended in place get theirs at insertion.
-  std::vector<Vec3> x_at_build_;
-  std::vector<double> r_at_build_;
-  std::vector<std::uint32_t> reach_tracked_;  // slots whose radius or reach changed since the build
-  struct CrossForce {  // a pair's share for a particle owned by another thread
-    std::uint32_t particle;
-    Vec3 force, torque;
-  };
-  std::vector<std::vector<CrossForce>> cross_;  // per thread, reused
-  bool need_rebuild_ = true;
+  PairTracker tracker_;
+  PairForceLoop pair_loop_;
+  WallForceLoop wall_loop_;
+  std::vector<WallContactRecord> wall_contacts_;  // touching now
   bool forces_cleared_ = false;
   bool is_setup_ = false;
-  std::uint64_t rebuilds_ = 0;
   double elastic_energy_ = 0;
-  double max_disp2_ = 0;
-  double reach_change(std::size_t i) const;  // |x - x_build| + r - r_build (m)
 };
 
 }  // namespace comminute

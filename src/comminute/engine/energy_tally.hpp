@@ -1,0 +1,31 @@
+#pragma once
+// Energies summed over the contacts one thread evaluates in a force loop (J).
+#include "comminute/contact/contact_law.hpp"
+
+namespace comminute {
+
+// Running energy ledger (J), for the time-series output and conservation checks.
+struct EnergyLedger {
+  double damping = 0;    // dissipated by normal/tangential dashpots
+  double friction = 0;   // dissipated by sliding and rolling friction
+  double removed = 0;    // taken out by modules (breakage, particle removal), see their logs
+  double wall_work = 0;  // work done on the particles by moving walls
+};
+
+struct EnergyTally {
+  double damping = 0, friction = 0, elastic = 0, wall_work = 0;
+  void add(const ContactForces& out) {
+    damping += out.damping_dissipation;
+    friction += out.friction_dissipation;
+    elastic += out.stored_energy;
+  }
+  // Books the dissipation into the ledger and adds the elastic energy held now to `held`.
+  void book(EnergyLedger& ledger, double& held) const {
+    ledger.damping += damping;
+    ledger.friction += friction;
+    ledger.wall_work += wall_work;
+    held += elastic;
+  }
+};
+
+}  // namespace comminute

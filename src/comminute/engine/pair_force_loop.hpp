@@ -1,0 +1,36 @@
+#pragma once
+// The particle–particle force loop. Each thread owns a contiguous range of particle slots and the
+// pairs they own (pairs are grouped by owner), split so that the threads get equal work. A thread
+// writes the forces of its own particles directly; a pair whose other particle belongs to another
+// thread queues that particle's share, added after the loop in thread order. No atomics, no
+// per-thread copies of the force arrays, and the same thread count gives the same sums.
+#include <cstdint>
+#include <vector>
+
+#include "comminute/contact/contact_state.hpp"
+#include "comminute/engine/contact_pipeline.hpp"
+#include "comminute/engine/energy_tally.hpp"
+#include "comminute/neighbor/neighbor_list.hpp"
+#include "comminute/particles/material.hpp"
+#include "comminute/particles/particle_store.hpp"
+
+namespace comminute {
+
+class PairForceLoop {
+ public:
+  // Adds the contact forces and torques of every touching pair to p.f, p.t, updates `state`
+  // (active flags, slots), books the step's dissipation in `ledger` and adds the elastic energy
+  // held in the contacts to `elastic` (J), thread by thread in order.
+  void run(ParticleStore& p, const MaterialTable& materials, const NeighborList& pairs,
+           const ContactPipeline& pipeline, ContactStateStore& state, double dt,
+           EnergyLedger& ledger, double& elastic);
+
+ private:
+  struct CrossForce {  // a pair's share for a particle owned by another thread
+    std::uint32_t particle;
+    Vec3 force, torque;
+  };
+  std::vector<std::vector<CrossForce>> cross_;  // per thread, reused
+};
+
+}  // namespace comminute

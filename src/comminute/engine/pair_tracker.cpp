@@ -1,0 +1,202 @@
+#include "comminute/engine/pair_tracker.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <unordered_map>
+
+namespace comminute {
+
+bool PairTracker::update(ParticleStore& p, const Walls& walls, SimulationOptions& options,
+                         ContactStateStore& pair_state, ContactStateStore& wall_state) {
+  if (!stale_) {
+    double travel = 0;
+    for (double t : wall_travel_) travel = std::max(travel, t);
+    // |x - x_build| for every particle; plus the change of radius for the tracked ones
+    double reach = std::sqrt(max_disp2_);
+    for (std::uint32_t s : reach_tracked_) reach = std::max(reach, reach_change(p, s));
+    const double limit = 0.5 * options.skin;
+    if (reach > limit || travel > limit) stale_ = true;
+  }
+  if (!stale_) return false;
+  rebuild(p, walls, options, pair_state, wall_state);
+  return true;
+}
+
+void PairTracker::rebuild(ParticleStore& p, const Walls& walls, SimulationOptions& options,
+                          ContactStateStore& pair_state, ContactStateStore& wall_state) {
+  if (options.skin <= 0 && !p.empty()) {
+    double mean = 0;
+    for (double r : p.radius) mean += 2 * r;
+    options.skin = 0.2 * mean / static_cast<double>(p.size());
+  }
+  const bool sort_now = options.sort_every > 0 && rebuilds_ % options.sort_every == 0;
+  if (sort_now && !p.empty()) {
+    const double rmax = *std::max_element(p.radius.begin(), p.radius.end());
+    auto order = NeighborList::cell_order(p, 2 * rmax + options.skin);
+    p.permute(order);
+  }
+  nlist_.build(p, options.skin, pair_state.active);
+  const auto& carried = nlist_.carried();
+  pair_state.carry(carried.from, carried.to, carried.reversed, nlist_.size());
+  x_at_build_ = p.x;
+  r_at_build_ = p.radius;
+  reach_tracked_.clear();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.flags[i] & pflag::growing) reach_tracked_.push_back(static_cast<std::uint32_t>(i));
+  build_wall_candidates(p, walls, options.skin, wall_state);
+  stale_ = false;
+  ++rebuilds_;
+}
+
+void PairTracker::add_wall_candidates(const ParticleStore& p, const Walls& walls, std::uint32_t i,
+                                      std::uint32_t w, const Vec3& x, double r, double skin,
+                                      std::vector<WallContact>& found,
+                                      std::vector<WallContactRecord>& into) const {
+  found.clear();
+  const bool near = walls[w]->contacts(x, r, skin, found) > 0;
+  if (!near && !wall_full_scan_[w]) return;
+  // one candidate per (particle, wall, feature); a full-scan wall keeps one per particle
+  if (found.empty()) found.push_back({{}, {}, -1, 0});
+  for (const auto& c : found) into.push_back({i, w, c.feature, NeighborList::none, p.id[i]});
+}
+
+void PairTracker::build_wall_candidates(const ParticleStore& p, const Walls& walls, double skin,
+                                        ContactStateStore& wall_state) {
+  // the touching wall contacts, by (id, wall, feature), with their index in the old list
+  std::vector<WallContactRecord> old;
+  for (std::size_t q = 0; q < wall_candidates_.size(); ++q)
+    if (wall_state.active[q]) {
+      old.push_back(wall_candidates_[q]);
+      old.back().candidate = static_cast<std::uint32_t>(q);
+    }
+  auto key_less = [](const WallContactRecord& a, const WallContactRecord& b) {
+    return std::tie(a.id, a.wall, a.feature) < std::tie(b.id, b.wall, b.feature);
+  };
+  std::sort(old.begin(), old.end(), key_less);
+  std::vector<WallContactRecord> fresh;  // `candidate`: the old index whose state it continues
+  wall_full_scan_.assign(walls.size(), 0);
+  wall_travel_.assign(walls.size(), 0.0);
+  std::vector<WallContact> found;
+  for (std::uint32_t w = 0; w < walls.size(); ++w) {
+    wall_full_scan_[w] =
+        walls[w]->surface_moves() && norm2(walls[w]->kinematics.angular_velocity) > 0;
+    for (std::uint32_t i = 0; i < p.size(); ++i) {
+      const std::size_t from = fresh.size();
+      add_wall_candidates(p, walls, i, w, p.x[i], p.radius[i], skin, found, fresh);
+      for (std::size_t k = from; k < fresh.size(); ++k) {
+        WallContactRecord& r = fresh[k];
+        auto it = std::lower_bound(old.begin(), old.end(), r, key_less);
+        if (it != old.end() && !key_less(r, *it)) r.candidate = it->candidate;
+      }
+    }
+  }
+  // by particle (then wall, feature): lets the force loop split the list between threads
+  std::stable_sort(fresh.begin(), fresh.end(),
+                   [](const WallContactRecord& a, const WallContactRecord& b) {
+                     return a.particle < b.particle;
+                   });
+  std::vector<std::uint32_t> state_from(fresh.size());
+  for (std::size_t q = 0; q < fresh.size(); ++q) state_from[q] = fresh[q].candidate;
+  wall_state.gather(state_from);
+  wall_candidates_.swap(fresh);
+}
+
+bool PairTracker::replace(const ParticleStore& p, const Walls& walls, double skin,
+                          const std::vector<NewFragment>& fragments, ContactStateStore& pair_state,
+                          ContactStateStore& wall_state) {
+  if (stale_ || skin <= 0 || !nlist_.can_update_in_place()) return false;
+  const std::vector<std::uint32_t> to_new = nlist_.slots_after_removal(p);
+  const std::size_t n_kept = static_cast<std::size_t>(std::count_if(
+      to_new.begin(), to_new.end(), [](std::uint32_t s) { return s != NeighborList::none; }));
+  std::unordered_map<std::uint64_t, double> final_radius;  // by fragment id
+  for (const auto& f : fragments) final_radius[f.id] = f.final_radius;
+  bool known = !to_new.empty() && p.size() - n_kept == fragments.size();
+  for (std::size_t s = n_kept; known && s < p.size(); ++s) known = final_radius.count(p.id[s]) > 0;
+  if (!known) return false;  // something else was inserted or moved: rebuild
+  std::vector<Vec3> x_build(p.size());
+  std::vector<double> r_build(p.size());
+  for (std::size_t old = 0; old < to_new.size(); ++old)
+    if (to_new[old] != NeighborList::none) {
+      x_build[to_new[old]] = x_at_build_[old];
+      r_build[to_new[old]] = r_at_build_[old];
+    }
+  std::vector<std::uint32_t> tracked;
+  for (std::uint32_t s : reach_tracked_)
+    if (to_new[s] != NeighborList::none) tracked.push_back(to_new[s]);
+  // a fragment's reach sphere at "build" is where it is now at its final size: growth up to that
+  // size then never invalidates the list
+  for (std::size_t s = n_kept; s < p.size(); ++s) {
+    x_build[s] = p.x[s];
+    r_build[s] = std::max(p.radius[s], final_radius[p.id[s]]);
+    tracked.push_back(static_cast<std::uint32_t>(s));
+  }
+  x_at_build_.swap(x_build);
+  r_at_build_.swap(r_build);
+  reach_tracked_.swap(tracked);
+  nlist_.update_in_place(p, to_new, x_at_build_, r_at_build_);
+  pair_state.gather(nlist_.kept_from());
+  // wall candidates: kept ones remapped, each fragment's found at its reach sphere
+  std::vector<WallContactRecord> kept;
+  std::vector<std::uint32_t> state_from;
+  for (std::size_t q = 0; q < wall_candidates_.size(); ++q) {
+    const WallContactRecord& c = wall_candidates_[q];
+    const std::uint32_t s = c.particle < to_new.size() ? to_new[c.particle] : NeighborList::none;
+    if (s == NeighborList::none) continue;
+    WallContactRecord r = c;
+    r.particle = s;
+    kept.push_back(r);
+    state_from.push_back(static_cast<std::uint32_t>(q));
+  }
+  std::vector<WallContact> found;
+  for (std::size_t s = n_kept; s < p.size(); ++s)
+    for (std::uint32_t w = 0; w < walls.size(); ++w)
+      add_wall_candidates(p, walls, static_cast<std::uint32_t>(s), w, x_at_build_[s],
+                          r_at_build_[s], skin, found, kept);
+  state_from.resize(kept.size(), NeighborList::none);
+  wall_candidates_.swap(kept);
+  wall_state.gather(state_from);
+  return true;
+}
+
+double PairTracker::reach_change(const ParticleStore& p, std::size_t i) const {
+  return norm(p.x[i] - x_at_build_[i]) + p.radius[i] - r_at_build_[i];
+}
+
+double PairTracker::reach_margin(const ParticleStore& p, std::size_t i, double skin) const {
+  if (stale_ || i >= x_at_build_.size()) return 0;
+  return 0.5 * skin - reach_change(p, i);
+}
+
+void PairTracker::save(Archive& a) const {
+  a.put("pairs/first", nlist_.first);
+  a.put("pairs/second", nlist_.second);
+  a.put("pairs/ids", nlist_.ids_at_build());
+  a.put("pairs/large", nlist_.large());
+  a.put("pairs/x_at_build", x_at_build_);
+  a.put("pairs/r_at_build", r_at_build_);
+  a.put("pairs/reach_tracked", reach_tracked_);
+  a.put("walls/candidates", wall_candidates_);
+  a.put("walls/travel", wall_travel_);
+  a.put("walls/full_scan", wall_full_scan_);
+  a.put_value("sim/rebuilds", rebuilds_);
+  a.put_value("sim/max_disp2", max_disp2_);
+  a.put_value("sim/need_rebuild", static_cast<std::uint8_t>(stale_));
+}
+
+void PairTracker::load(const Archive& a, const ParticleStore& p, double skin) {
+  nlist_.restore(a.get<std::uint32_t>("pairs/first"), a.get<std::uint32_t>("pairs/second"),
+                 a.get<std::uint64_t>("pairs/ids"), a.get<std::uint8_t>("pairs/large"));
+  x_at_build_ = a.get<Vec3>("pairs/x_at_build");
+  r_at_build_ = a.get<double>("pairs/r_at_build");
+  reach_tracked_ = a.get<std::uint32_t>("pairs/reach_tracked");
+  if (x_at_build_.size() == p.size()) nlist_.rebuild_index(x_at_build_, r_at_build_, skin);
+  wall_candidates_ = a.get<WallContactRecord>("walls/candidates");
+  wall_travel_ = a.get<double>("walls/travel");
+  wall_full_scan_ = a.get<std::uint8_t>("walls/full_scan");
+  rebuilds_ = a.get_value<std::uint64_t>("sim/rebuilds");
+  max_disp2_ = a.get_value<double>("sim/max_disp2");
+  stale_ = a.get_value<std::uint8_t>("sim/need_rebuild") != 0;
+}
+
+}  // namespace comminute

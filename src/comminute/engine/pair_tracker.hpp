@@ -1,0 +1,93 @@
+#pragma once
+// Which bodies may touch: the neighbour list of particle pairs and the particle–wall candidates,
+// what they were built from (each particle's reach sphere: its position and radius at the build),
+// when they must be rebuilt (a particle moved or grew by more than skin/2, a wall travelled as
+// much, or particles were inserted or removed), and their in-place update when breakage replaces
+// parents by fragments. It carries the engine's contact state through both.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "comminute/contact/contact_state.hpp"
+#include "comminute/core/archive.hpp"
+#include "comminute/engine/wall_contact.hpp"
+#include "comminute/geometry/wall.hpp"
+#include "comminute/neighbor/neighbor_list.hpp"
+#include "comminute/particles/particle_store.hpp"
+
+namespace comminute {
+
+// A fragment appended by a breakage module: its id and the radius it will grow to.
+struct NewFragment {
+  std::uint64_t id = 0;
+  double final_radius = 0;  // m
+};
+
+struct SimulationOptions {
+  double skin = 0;      // m, Verlet skin (0: 0.2 x mean diameter at the first build with particles)
+  int sort_every = 20;  // re-sort particles by cell every this many list rebuilds (0: never)
+};
+
+class PairTracker {
+ public:
+  using Walls = std::vector<std::unique_ptr<Wall>>;
+
+  // The lists must be rebuilt before the next force computation.
+  void invalidate() { stale_ = true; }
+  bool stale() const { return stale_; }
+  // Positions at the last build, one per particle while the lists are current.
+  const std::vector<Vec3>& build_positions() const { return x_at_build_; }
+  // After a drift: the largest squared displacement since the build (m2), and the distance
+  // wall k moved this step (m).
+  void moved(double max_displacement2) { max_disp2_ = max_displacement2; }
+  void wall_moved(std::size_t k, double distance) { wall_travel_[k] += distance; }
+  // Rebuilds the lists when they are stale or some reach changed by more than skin/2 (sorting the
+  // particles by cell every options.sort_every rebuilds; setting a zero skin from the particles);
+  // the contact state follows. Returns true when it rebuilt.
+  bool update(ParticleStore& p, const Walls& walls, SimulationOptions& options,
+              ContactStateStore& pair_state, ContactStateStore& wall_state);
+  // After compact() removed parents and their fragments were appended: updates both lists in
+  // place. Each fragment gets every partner within skin of its sphere at its final radius, so the
+  // skin/2 trigger stays exact and growth needs no rebuild. False when that is not possible (the
+  // caller then invalidates).
+  bool replace(const ParticleStore& p, const Walls& walls, double skin,
+               const std::vector<NewFragment>& fragments, ContactStateStore& pair_state,
+               ContactStateStore& wall_state);
+  // How much particle i may still move or grow (m) before the lists stop covering it.
+  double reach_margin(const ParticleStore& p, std::size_t i, double skin) const;
+
+  const NeighborList& pairs() const { return nlist_; }
+  NeighborList& pairs() { return nlist_; }
+  const std::vector<WallContactRecord>& wall_candidates() const { return wall_candidates_; }
+  std::uint64_t rebuilds() const { return rebuilds_; }
+
+  void save(Archive& a) const;
+  // Needs the particles already loaded (to re-create the reach index) and the skin.
+  void load(const Archive& a, const ParticleStore& p, double skin);
+
+ private:
+  void rebuild(ParticleStore& p, const Walls& walls, SimulationOptions& options,
+               ContactStateStore& pair_state, ContactStateStore& wall_state);
+  void build_wall_candidates(const ParticleStore& p, const Walls& walls, double skin,
+                             ContactStateStore& wall_state);
+  void add_wall_candidates(const ParticleStore& p, const Walls& walls, std::uint32_t i,
+                           std::uint32_t w, const Vec3& x, double r, double skin,
+                           std::vector<WallContact>& found,
+                           std::vector<WallContactRecord>& into) const;
+  double reach_change(const ParticleStore& p, std::size_t i) const;  // |x - x_b| + r - r_b
+
+  NeighborList nlist_;
+  std::vector<WallContactRecord> wall_candidates_;  // near walls at the last build
+  std::vector<std::uint8_t> wall_full_scan_;        // per wall: surface moves, check every step
+  std::vector<double> wall_travel_;                 // per wall: distance moved since the build
+  // Reach at the last build: a particle's pairs cover every sphere within skin of the sphere
+  // (x_at_build_, r_at_build_); fragments appended in place get theirs at insertion.
+  std::vector<Vec3> x_at_build_;
+  std::vector<double> r_at_build_;
+  std::vector<std::uint32_t> reach_tracked_;  // slots whose radius or reach changed since the build
+  bool stale_ = true;
+  std::uint64_t rebuilds_ = 0;
+  double max_disp2_ = 0;
+};
+
+}  // namespace comminute

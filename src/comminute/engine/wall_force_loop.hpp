@@ -1,0 +1,30 @@
+#pragma once
+// The particle–wall force loop over the candidates of the pair tracker. Candidates are sorted by
+// particle, so splitting them at particle boundaries gives each thread its own particles; wall
+// forces and tallies are summed per thread and combined in thread order (reproducible).
+#include <memory>
+#include <vector>
+
+#include "comminute/contact/contact_state.hpp"
+#include "comminute/engine/contact_pipeline.hpp"
+#include "comminute/engine/energy_tally.hpp"
+#include "comminute/engine/wall_contact.hpp"
+#include "comminute/geometry/wall.hpp"
+#include "comminute/particles/material.hpp"
+#include "comminute/particles/particle_store.hpp"
+
+namespace comminute {
+
+class WallForceLoop {
+ public:
+  // Adds the wall contact forces to p.f, p.t and their reactions to each wall's force and torque,
+  // updates `state`, books the dissipation and the walls' work in `ledger`, adds the elastic
+  // energy to `elastic` (J), and lists the touching contacts in `touching`.
+  void run(ParticleStore& p, const MaterialTable& materials,
+           const std::vector<std::unique_ptr<Wall>>& walls,
+           const std::vector<WallContactRecord>& candidates, const ContactPipeline& pipeline,
+           ContactStateStore& state, double dt, EnergyLedger& ledger, double& elastic,
+           std::vector<WallContactRecord>& touching);
+};
+
+}  // namespace comminute

@@ -12,6 +12,7 @@
 namespace comminute {
 
 class Simulation;
+class SeriesSource;
 
 class Module {
  public:
@@ -24,6 +25,8 @@ class Module {
   // Checkpoint: put/get the module's state under names prefixed with name() + "/".
   virtual void save(Archive&) const {}
   virtual void load(const Archive&) {}
+  // The tables this module offers to the outputs (series_source.hpp), or null.
+  virtual SeriesSource* series_source() { return nullptr; }
 };
 
 }  // namespace comminute

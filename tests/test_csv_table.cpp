@@ -74,8 +74,8 @@ TEST(SeriesWriter, AppendsRowsAndResumesAtATime) {
   SeriesWriter again(dir / "s.csv", {{"time", "s"}, {"x", "m"}});
   again.resume(0.5);
   again.append({0.6, 2.0});
-  EXPECT_EQ(slurp(dir / "s.csv"), fmt::format("time [s],x [m]\n0,1\n0.25,0.5\n0.5,{}\n0.6,2\n",
-                                              1.0 / 3.0));
+  EXPECT_EQ(slurp(dir / "s.csv"),
+            fmt::format("time [s],x [m]\n0,1\n0.25,0.5\n0.5,{}\n0.6,2\n", 1.0 / 3.0));
   SeriesWriter other(dir / "s.csv", {{"time", "s"}, {"y", "m"}});
   EXPECT_THROW(other.resume(0.5), Error);
 }

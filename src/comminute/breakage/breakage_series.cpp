@@ -60,8 +60,8 @@ Table BreakageSeries::events() const {
                               {"t10", "%"}});
   for (const auto& r : module_.log()) {
     const MaterialBreakage* m = module_.material(r.material);
-    t.add_row({r.time, r.parent_id, r.material, r.generation, r.diameter, r.mass,
-               r.specific_energy, r.peak_force, r.strength,
+    t.add_row({r.time, r.parent_id, r.material, r.generation, r.diameter, r.mass, r.specific_energy,
+               r.peak_force, r.strength,
                m ? std::string(m->criterion->strength_unit()) : std::string(), r.damage_before,
                r.broken, r.fragments, r.fines_particles, r.fines_mass, r.t10});
   }
@@ -86,10 +86,9 @@ Table BreakageSeries::ledger() const {
                               {"fines_momentum_y", "kg m/s"},
                               {"fines_momentum_z", "kg m/s"}});
   for (const auto& r : ledger_)
-    t.add_row({r.time, r.events, r.breakages, r.pending, r.particles, r.particle_mass,
-               r.fines_mass, r.removed_total, r.breakage_removed, r.created, r.momentum.x,
-               r.momentum.y, r.momentum.z, r.fines_momentum.x, r.fines_momentum.y,
-               r.fines_momentum.z});
+    t.add_row({r.time, r.events, r.breakages, r.pending, r.particles, r.particle_mass, r.fines_mass,
+               r.removed_total, r.breakage_removed, r.created, r.momentum.x, r.momentum.y,
+               r.momentum.z, r.fines_momentum.x, r.fines_momentum.y, r.fines_momentum.z});
   return t;
 }
 
@@ -130,8 +129,12 @@ Table BreakageSeries::model_curves(const Simulation& sim) const {
   return t;
 }
 
-void BreakageSeries::save(Archive& a) const { a.put("breakage/ledger", ledger_); }
+void BreakageSeries::save(Archive& a) const {
+  a.put("breakage/ledger", ledger_);
+}
 
-void BreakageSeries::load(const Archive& a) { ledger_ = a.get<LedgerRow>("breakage/ledger"); }
+void BreakageSeries::load(const Archive& a) {
+  ledger_ = a.get<LedgerRow>("breakage/ledger");
+}
 
 }  // namespace comminute::breakage

@@ -8,7 +8,9 @@
 namespace comminute {
 
 namespace {
-bool breaks_csv(const std::string& s) { return s.find_first_of(",\"\r\n") != std::string::npos; }
+bool breaks_csv(const std::string& s) {
+  return s.find_first_of(",\"\r\n") != std::string::npos;
+}
 }  // namespace
 
 Cell::Cell(std::string v) {
@@ -58,8 +60,8 @@ Table::Table(std::string name, std::vector<Column> columns)
 
 void Table::add_row(const std::vector<Cell>& cells) {
   if (cells.size() != columns_.size())
-    throw Error(fmt::format("table '{}' has {} columns, a row has {} cells", name_,
-                            columns_.size(), cells.size()));
+    throw Error(fmt::format("table '{}' has {} columns, a row has {} cells", name_, columns_.size(),
+                            cells.size()));
   lines_.push_back(csv_line(cells));
 }
 

@@ -38,10 +38,12 @@ class OutputModule : public Module {
   void save(Archive& a) const override;
   void load(const Archive& a) override;
 
-  // Opens the series (fresh, or continued after load()); a fresh run also writes the initial
-  // state (snapshot and row at the start time).
+  // Opens the series (fresh, or continued after load()) and finds the modules that offer tables;
+  // a fresh run also writes the initial state (snapshot, row and a sample of every table at the
+  // start time); a continued run rewrites the tables as of the checkpoint.
   void start(Simulation& sim);
-  // Writes the last snapshot and row (unless written at this step already) and a checkpoint.
+  // Writes the last snapshot, row and sample of every table (those not written at this step
+  // already: the final row at the run's end time) and a checkpoint.
   void finish(Simulation& sim);
   // Writes <directory>/checkpoint.h5 now (atomically; the previous one stays until replaced).
   void write_checkpoint(Simulation& sim);

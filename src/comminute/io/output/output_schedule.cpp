@@ -16,8 +16,7 @@ bool OutputSchedule::due(double time, std::uint64_t step, double dt) const {
 void OutputSchedule::done(double time, std::uint64_t step, double dt) {
   last_step_ = step;
   if (cadence_.interval > 0)  // skip outputs missed when the interval is shorter than a step
-    next_index_ =
-        static_cast<std::uint64_t>(std::floor((time + 0.5 * dt) / cadence_.interval)) + 1;
+    next_index_ = static_cast<std::uint64_t>(std::floor((time + 0.5 * dt) / cadence_.interval)) + 1;
 }
 
 }  // namespace comminute::io

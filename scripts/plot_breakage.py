@@ -32,14 +32,14 @@ def read(path):
 def size_distribution(rows, out):
     if not rows:
         return
-    times = sorted({float(r["time_s"]) for r in rows})
+    times = sorted({float(r["time [s]"]) for r in rows})
     picks = sorted({times[0], times[len(times) // 2], times[-1]})
     fig, ax = plt.subplots(figsize=(6, 4.5))
-    for mat in sorted({r["material"] for r in rows}):
+    for mat in sorted({r["material [-]"] for r in rows}):
         for t in picks:
-            sel = [r for r in rows if r["material"] == mat and float(r["time_s"]) == t]
-            x = [float(r["sieve_m"]) * 1e3 for r in sel]
-            y = [100 * float(r["fraction_passing"]) for r in sel]
+            sel = [r for r in rows if r["material [-]"] == mat and float(r["time [s]"]) == t]
+            x = [float(r["sieve [m]"]) * 1e3 for r in sel]
+            y = [100 * float(r["fraction_passing [-]"]) for r in sel]
             ax.semilogx(x, y, marker="o", ms=3, label=f"{mat}, t = {t * 1e3:.3g} ms")
     ax.set_xlabel("sieve size (mm)")
     ax.set_ylabel("cumulative mass passing (%)")
@@ -52,18 +52,18 @@ def size_distribution(rows, out):
 
 
 def t10_plot(events, model, out):
-    broken = [r for r in events if r["broken"] == "1"]
+    broken = [r for r in events if r["broken [-]"] == "1"]
     if not broken:
         return
     fig, ax = plt.subplots(figsize=(6, 4.5))
-    ax.scatter([float(r["specific_energy_J_per_kg"]) for r in broken],
-               [float(r["t10_percent"]) for r in broken], s=8, alpha=0.5,
+    ax.scatter([float(r["specific_energy [J/kg]"]) for r in broken],
+               [float(r["t10 [%]"]) for r in broken], s=8, alpha=0.5,
                label="breakage events")
-    for mat in sorted({r["material"] for r in model}):
-        sel = [r for r in model if r["material"] == mat]
-        d = float(sel[0]["diameter_m"]) * 1e3
-        ax.plot([float(r["specific_energy_J_per_kg"]) for r in sel],
-                [float(r["t10_percent"]) for r in sel], "k-",
+    for mat in sorted({r["material [-]"] for r in model}):
+        sel = [r for r in model if r["material [-]"] == mat]
+        d = float(sel[0]["diameter [m]"]) * 1e3
+        ax.plot([float(r["specific_energy [J/kg]"]) for r in sel],
+                [float(r["t10 [%]"]) for r in sel], "k-",
                 label=f"model A(1-exp(-b'E/E50b)), d = {d:.3g} mm\n(fragments follow the curve of their own size)")
     ax.set_xlabel("absorbed specific energy E (J/kg)")
     ax.set_ylabel("t10 (%)")
@@ -82,13 +82,13 @@ def probability_point(events):
     particles that survived (they took the whole impact). None when all broke."""
     first = {}
     for r in events:
-        if r["generation"] == "0" and r["parent_id"] not in first:
-            first[r["parent_id"]] = r
+        if r["generation [-]"] == "0" and r["parent_id [-]"] not in first:
+            first[r["parent_id [-]"]] = r
     if not first:
         return None
-    survived = [float(r["specific_energy_J_per_kg"]) for r in first.values() if r["broken"] == "0"]
+    survived = [float(r["specific_energy [J/kg]"]) for r in first.values() if r["broken [-]"] == "0"]
     n = len(first)
-    p = sum(r["broken"] == "1" for r in first.values()) / n
+    p = sum(r["broken [-]"] == "1" for r in first.values()) / n
     if not survived:
         return None
     return sum(survived) / len(survived), p, n
@@ -98,8 +98,8 @@ def probability_plot(runs, out):
     points = [pt for pt in (probability_point(ev) for ev, _ in runs) if pt]
     # the model curve of the run that reaches the highest energy (same material and size)
     model = max((m for _, m in runs), key=lambda m: max(
-        (float(r["specific_energy_J_per_kg"]) for r in m), default=0.0))
-    curve = [r for r in model if float(r["probability"]) >= 0]
+        (float(r["specific_energy [J/kg]"]) for r in m), default=0.0))
+    curve = [r for r in model if float(r["probability [-]"]) >= 0]
     if not points or not curve:
         return
     fig, ax = plt.subplots(figsize=(6, 4.5))
@@ -107,12 +107,12 @@ def probability_plot(runs, out):
                 yerr=[3 * math.sqrt(max(p[1] * (1 - p[1]), 1e-12) / p[2]) for p in points],
                 fmt="o", capsize=3, label="drop-weight runs (3 sigma binomial)")
     emax = max(p[0] for p in points) * 1.5
-    for mat in sorted({r["material"] for r in curve}):
-        sel = [r for r in curve if r["material"] == mat]
-        d = float(sel[0]["diameter_m"]) * 1e3
-        ax.plot([float(r["specific_energy_J_per_kg"]) for r in sel],
-                [float(r["probability"]) for r in sel], "k-", label=f"model P(E), d = {d:.3g} mm")
-        emax = max(emax, float(sel[-1]["specific_energy_J_per_kg"]))
+    for mat in sorted({r["material [-]"] for r in curve}):
+        sel = [r for r in curve if r["material [-]"] == mat]
+        d = float(sel[0]["diameter [m]"]) * 1e3
+        ax.plot([float(r["specific_energy [J/kg]"]) for r in sel],
+                [float(r["probability [-]"]) for r in sel], "k-", label=f"model P(E), d = {d:.3g} mm")
+        emax = max(emax, float(sel[-1]["specific_energy [J/kg]"]))
     ax.set_xlim(0, emax)
     ax.set_xlabel("absorbed specific energy E (J/kg)")
     ax.set_ylabel("breakage probability")
@@ -128,14 +128,14 @@ def probability_plot(runs, out):
 def ledger_plot(rows, out):
     if not rows:
         return
-    t = [float(r["time_s"]) * 1e3 for r in rows]
+    t = [float(r["time [s]"]) * 1e3 for r in rows]
     fig, ax = plt.subplots(figsize=(6, 4.5))
-    ax.plot(t, [float(r["removed_energy_breakage_J"]) for r in rows], label="removed by breakage (J)")
+    ax.plot(t, [float(r["removed_energy_breakage [J]"]) for r in rows], label="removed by breakage (J)")
     ax.set_xlabel("time (ms)")
     ax.set_ylabel("energy (J)")
     ax2 = ax.twinx()
-    ax2.plot(t, [int(r["breakages"]) for r in rows], "r--", label="breakages")
-    ax2.plot(t, [int(r["pending_fragments"]) for r in rows], "g:", label="fragments still growing")
+    ax2.plot(t, [int(r["breakages [-]"]) for r in rows], "r--", label="breakages")
+    ax2.plot(t, [int(r["pending_fragments [-]"]) for r in rows], "g:", label="fragments still growing")
     ax2.set_ylabel("count")
     ax.set_title("Energy ledger and breakage count")
     h1, l1 = ax.get_legend_handles_labels()

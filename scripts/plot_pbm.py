@@ -31,17 +31,17 @@ def by(col, key):
 def plot_pbm(d):
     t = read(f"{d}/distributions.csv")
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.2))
-    groups = by(t, "time_s")
+    groups = by(t, "time [s]")
     cmap = plt.get_cmap("viridis")
     for n, (time, idx) in enumerate(sorted(groups.items())):
         c = cmap(n / max(1, len(groups) - 1))
-        up = [t["size_upper_m"][i] * 1e6 for i in idx]
-        lo = [max(t["size_lower_m"][i], 1e-300) for i in idx]
-        a1.plot(up, [100 * t["cumulative_mass"][i] for i in idx], color=c, label=f"{time:g} s")
+        up = [t["size_upper [m]"][i] * 1e6 for i in idx]
+        lo = [max(t["size_lower [m]"][i], 1e-300) for i in idx]
+        a1.plot(up, [100 * t["cumulative_mass [-]"][i] for i in idx], color=c, label=f"{time:g} s")
         # mass density per unit ln d: q3,ln = mass fraction / ln(d_upper/d_lower)
-        q3 = [t["mass_fraction"][i] / math.log(t["size_upper_m"][i] / lo[k])
-              if t["size_lower_m"][i] > 0 else float("nan") for k, i in enumerate(idx)]
-        a2.plot([t["size_pivot_m"][i] * 1e6 for i in idx], q3, color=c, label=f"{time:g} s")
+        q3 = [t["mass_fraction [-]"][i] / math.log(t["size_upper [m]"][i] / lo[k])
+              if t["size_lower [m]"][i] > 0 else float("nan") for k, i in enumerate(idx)]
+        a2.plot([t["size_pivot [m]"][i] * 1e6 for i in idx], q3, color=c, label=f"{time:g} s")
     a1.set(xscale="log", xlabel="particle size (µm)", ylabel="cumulative mass passing (%)",
            title="Cumulative size distribution", ylim=(0, 100))
     a2.set(xscale="log", xlabel="particle size (µm)", ylabel="mass density per ln d (–)",
@@ -55,13 +55,13 @@ def plot_pbm(d):
     r = read(f"{d}/rates.csv")
     b = read(f"{d}/breakage_function.csv")
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.2))
-    pos = [i for i, v in enumerate(r["rate_1_per_s"]) if v > 0]  # log axis: unbreakable classes left out
-    a1.plot([r["size_m"][i] * 1e6 for i in pos], [r["rate_1_per_s"][i] for i in pos], "o-", ms=3)
+    pos = [i for i, v in enumerate(r["rate [1/s]"]) if v > 0]  # log axis: unbreakable classes left out
+    a1.plot([r["size [m]"][i] * 1e6 for i in pos], [r["rate [1/s]"][i] for i in pos], "o-", ms=3)
     a1.set(xscale="log", yscale="log", xlabel="particle size (µm)",
            ylabel="breakage rate S (1/s)", title="Breakage rate")
-    for parent, idx in sorted(by(b, "parent_size_m").items(), reverse=True):
-        a2.plot([b["size_ratio"][i] for i in idx],
-                [max(b["cumulative_mass_passing"][i], 1e-12) for i in idx],
+    for parent, idx in sorted(by(b, "parent_size [m]").items(), reverse=True):
+        a2.plot([b["size_ratio [-]"][i] for i in idx],
+                [max(b["cumulative_mass_passing [-]"][i], 1e-12) for i in idx],
                 label=f"parent {parent * 1e6:.3g} µm")
     a2.set(xscale="log", yscale="log", xlabel="fragment size / parent size d/D",
            ylabel="cumulative mass passing B", title="Breakage function", ylim=(1e-4, 1.5))
@@ -74,10 +74,10 @@ def plot_pbm(d):
     if os.path.exists(f"{d}/fracture_energy.csv"):  # UFRJ: weakening by damage
         fe = read(f"{d}/fracture_energy.csv")
         fig, ax = plt.subplots(figsize=(7, 4.2))
-        groups = by(fe, "time_s")
+        groups = by(fe, "time [s]")
         for n, (time, idx) in enumerate(sorted(groups.items())):
-            ax.plot([fe["size_pivot_m"][i] * 1e6 for i in idx],
-                    [fe["median_fracture_energy_J_per_kg"][i] for i in idx],
+            ax.plot([fe["size_pivot [m]"][i] * 1e6 for i in idx],
+                    [fe["median_fracture_energy [J/kg]"][i] for i in idx],
                     color=cmap(n / max(1, len(groups) - 1)), label=f"{time:g} s")
         ax.set(xscale="log", yscale="log", xlabel="particle size (µm)",
                ylabel="median fracture energy (J/kg)",
@@ -92,13 +92,13 @@ def plot_calibrate(d):
     t = read(f"{d}/fit.csv")
     fig, ax = plt.subplots(figsize=(7, 4.5))
     cmap = plt.get_cmap("tab10")
-    for n, (key, idx) in enumerate(sorted(by(t, "dataset").items())):
+    for n, (key, idx) in enumerate(sorted(by(t, "dataset [-]").items())):
         c = cmap(n % 10)
-        time = t["time_s"][idx[0]]
-        x = [t["size_m"][i] * 1e6 for i in idx]
-        ax.plot(x, [100 * t["measured"][i] for i in idx], "o", color=c,
+        time = t["time [s]"][idx[0]]
+        x = [t["size [m]"][i] * 1e6 for i in idx]
+        ax.plot(x, [100 * t["measured [-]"][i] for i in idx], "o", color=c,
                 label=f"measured, set {int(key)}, {time:g} s")
-        ax.plot(x, [100 * t["simulated"][i] for i in idx], "-", color=c, label="fitted")
+        ax.plot(x, [100 * t["simulated [-]"][i] for i in idx], "-", color=c, label="fitted")
     ax.set(xscale="log", xlabel="particle size (µm)", ylabel="cumulative passing (%)",
            title="Calibration: fitted vs measured", ylim=(0, 100))
     ax.grid(True, which="both", alpha=0.3)

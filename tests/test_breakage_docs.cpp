@@ -28,7 +28,7 @@ TEST(BreakageDocs, EveryKeyOfTheBreakageExamplesIsDocumented) {
     CaseFile f =
         CaseFile::load(std::string(COMMINUTE_SOURCE_DIR) + "/examples/breakage/" + name + ".toml");
     io::DemCase dem = io::build_dem_case(f.root());
-    ASSERT_NE(io::add_breakage(f.root(), dem, ""), nullptr) << name;
+    ASSERT_NE(io::add_breakage(f.root(), dem), nullptr) << name;
     f.reject_unknown();
     for (const std::string& path : f.used_keys()) {
       std::string leaf = path.substr(path.find_last_of('.') + 1);

@@ -3,6 +3,8 @@
 // (same thread count): final state, time-series CSV, collections and snapshot files.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <csignal>
 #include <fstream>
 #include <iterator>
@@ -11,6 +13,7 @@
 #include "comminute/core/error.hpp"
 #include "comminute/core/parallel.hpp"
 #include "comminute/core/rng.hpp"
+#include "comminute/engine/series_source.hpp"
 #include "comminute/geometry/box_wall.hpp"
 #include "comminute/geometry/plane_wall.hpp"
 #include "comminute/io/output/checkpoint.hpp"
@@ -38,6 +41,36 @@ class InterruptAt : public Module {
 
  private:
   std::uint64_t step_;
+};
+
+// A module that offers a table: one row (time, step) per sample, every 400 steps. Rows are
+// checkpointed, so a continued run has them all.
+class CountingSource : public Module, public SeriesSource {
+ public:
+  std::string name() const override { return "counting"; }
+  SeriesSource* series_source() override { return this; }
+  Cadence output_cadence() const override { return {0, 400}; }
+  void sample(const Simulation& sim) override {
+    times_.push_back(sim.time);
+    steps_.push_back(sim.step_count);
+  }
+  std::vector<Table> tables(const Simulation&) const override {
+    Table t("counting", {{"time", "s"}, {"step", "-"}});
+    for (std::size_t k = 0; k < times_.size(); ++k) t.add_row({times_[k], steps_[k]});
+    return {t};
+  }
+  void save(Archive& a) const override {
+    a.put("counting/times", times_);
+    a.put("counting/steps", steps_);
+  }
+  void load(const Archive& a) override {
+    times_ = a.get<double>("counting/times");
+    steps_ = a.get<std::uint64_t>("counting/steps");
+  }
+
+ private:
+  std::vector<double> times_;
+  std::vector<std::uint64_t> steps_;
 };
 
 struct DemRun {
@@ -77,6 +110,7 @@ DemRun make_run(const std::filesystem::path& dir, std::uint64_t interrupt_step =
   o.particles_cadence.interval = 0.005;
   o.timeseries_cadence.steps = 25;
   o.checkpoint_cadence.interval = 0.01;
+  sim.modules.push_back(std::make_unique<CountingSource>());
   auto out = std::make_unique<io::OutputModule>(o, end_time);
   run.output = out.get();
   sim.modules.push_back(std::move(out));
@@ -103,6 +137,21 @@ TEST(OutputModule, WritesEachSeriesOnItsCadence) {
   EXPECT_EQ(run.sim->step_count, 1500u);
   // Rows at step 0 and every 25 steps: 1 + 1500/25 = 61, plus the header.
   EXPECT_EQ(count_lines(slurp(dir / "timeseries.csv")), 62u);
+  // A module's table: a row at the start, every 400 steps and a final one at the end time.
+  {
+    std::istringstream t(slurp(dir / "counting.csv"));
+    std::string line;
+    std::getline(t, line);
+    EXPECT_EQ(line, "time [s],step [-]");
+    std::vector<std::string> steps;
+    std::string last_time;
+    while (std::getline(t, line)) {
+      last_time = line.substr(0, line.find(','));
+      steps.push_back(line.substr(line.find(',') + 1));
+    }
+    EXPECT_EQ(steps, (std::vector<std::string>{"0", "400", "800", "1200", "1500"}));
+    EXPECT_EQ(last_time, fmt::format("{}", run.sim->time));
+  }
   // Snapshots at t = 0, 0.005, ..., 0.03: 7 entries in each collection.
   const std::string pvd = slurp(dir / "particles.pvd");
   EXPECT_EQ(count_lines(pvd), 7u + 5u) << pvd;  // 5 lines of XML around the entries
@@ -176,9 +225,9 @@ TEST(OutputModule, InterruptAndRestartReproduceTheUninterruptedRun) {
   ASSERT_EQ(final_a.entries().size(), final_c.entries().size());
   for (const auto& [name, bytes] : final_a.entries())
     EXPECT_TRUE(final_c.entries().at(name) == bytes) << "state entry '" << name << "' differs";
-  for (const char* f :
-       {"timeseries.csv", "particles.pvd", "walls.pvd", "particles/particles_0000001500.vtp",
-        "walls/walls_0000001500.vtp", "particles/particles_0000001250.vtp"})
+  for (const char* f : {"timeseries.csv", "counting.csv", "particles.pvd", "walls.pvd",
+                        "particles/particles_0000001500.vtp", "walls/walls_0000001500.vtp",
+                        "particles/particles_0000001250.vtp"})
     EXPECT_TRUE(slurp(dir / "a" / f) == slurp(dir / "b" / f)) << f << " differs";
 }
 

@@ -10,7 +10,7 @@ LoadedCase load_dem_case(const std::filesystem::path& path) {
   const auto output_table = file.root().optional_table("output");
   io::OutputOptions output = output_table ? io::read_output_options(*output_table)
                                           : io::default_output_options(file.path());
-  io::add_breakage(file.root(), dem, output.directory);
+  io::add_breakage(file.root(), dem);
   file.reject_unknown();
   return {std::move(file), std::move(dem), std::move(output)};
 }

@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "command.hpp"
-#include "comminute/core/atomic_file.hpp"
+#include "comminute/core/csv_table.hpp"
 #include "comminute/io/case/calibration_case.hpp"
 #include "comminute/io/case/pbm_case.hpp"
 #include "pbm_output.hpp"
@@ -17,43 +17,44 @@ namespace comminute::app {
 
 namespace {
 
+// Parameters are in the unit of their case key: the header says so with the unit "case".
 void write_results(const std::filesystem::path& dir, const io::CalibrationCase& cc,
                    const calibrate::MultiStartResult& r) {
   const auto& space = cc.space;
   {
-    AtomicFile f(dir / "starts.csv");
-    auto& o = f.stream();
-    o << "start,squared_error,evaluations,iterations,converged";
-    for (std::size_t i = 0; i < space.size(); ++i) o << ",start:" << space[i].name;
-    for (std::size_t i = 0; i < space.size(); ++i) o << ",best:" << space[i].name;
-    o << "\n";
+    std::vector<Column> cols = {{"start", "-"},
+                                {"squared_error", "-"},
+                                {"evaluations", "-"},
+                                {"iterations", "-"},
+                                {"converged", "-"}};
+    for (std::size_t i = 0; i < space.size(); ++i)
+      cols.push_back({"start:" + space[i].name, "case"});
+    for (std::size_t i = 0; i < space.size(); ++i)
+      cols.push_back({"best:" + space[i].name, "case"});
+    Table t("starts", cols);
     for (const auto& s : r.starts) {
-      o << fmt::format("{},{:.9g},{},{},{}", s.index, s.f, s.run.evaluations, s.run.iterations,
-                       s.run.converged ? 1 : 0);
-      for (double v : s.start) o << fmt::format(",{:.9g}", v);
-      for (double v : s.best) o << fmt::format(",{:.9g}", v);
-      o << "\n";
+      std::vector<Cell> row = {s.index, s.f, s.run.evaluations, s.run.iterations,
+                               s.run.converged ? 1 : 0};
+      for (double v : s.start) row.emplace_back(v);
+      for (double v : s.best) row.emplace_back(v);
+      t.add_row(row);
     }
-    f.commit();
+    t.write(dir);
   }
   const auto& best = r.starts[r.best];
   {
-    AtomicFile f(dir / "best_parameters.csv");
-    f.stream() << "# best of " << r.starts.size() << " starts: start " << best.index
-               << ", squared error " << fmt::format("{:.9g}", best.f) << "\n";
-    f.stream() << "key,value,min,max,scale\n";
+    Table t("best_parameters",
+            {{"key", "-"}, {"value", "case"}, {"min", "case"}, {"max", "case"}, {"scale", "-"}});
     for (std::size_t i = 0; i < space.size(); ++i)
-      f.stream() << fmt::format("{},{:.9g},{:.9g},{:.9g},{}\n", space[i].name, best.best[i],
-                                space[i].lower, space[i].upper,
-                                space[i].scale == calibrate::Scale::log ? "log" : "linear");
-    f.commit();
+      t.add_row({space[i].name, best.best[i], space[i].lower, space[i].upper,
+                 space[i].scale == calibrate::Scale::log ? "log" : "linear"});
+    t.write(dir);
   }
-  AtomicFile f(dir / "fit.csv");
-  f.stream() << "dataset,time_s,size_m,measured,simulated\n";
+  Table t("fit",
+          {{"dataset", "-"}, {"time", "s"}, {"size", "m"}, {"measured", "-"}, {"simulated", "-"}});
   for (const auto& p : cc.fit(best.best))
-    f.stream() << fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g}\n", p.dataset, p.time, p.size,
-                              p.measured, p.simulated);
-  f.commit();
+    t.add_row({p.dataset, p.time, p.size, p.measured, p.simulated});
+  t.write(dir);
 }
 
 std::function<int()> setup_calibrate(CLI::App& sub) {

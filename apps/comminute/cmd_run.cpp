@@ -6,7 +6,6 @@
 
 #include "case_loading.hpp"
 #include "command.hpp"
-#include "comminute/breakage/breakage_module.hpp"
 #include "comminute/core/parallel.hpp"
 #include "comminute/io/output/checkpoint.hpp"
 #include "comminute/io/output/output_module.hpp"
@@ -52,9 +51,6 @@ std::function<int()> setup_run(CLI::App& sub) {
     fmt::print(stderr, "{}\n", c.dem.time_step_note);
     for (const auto& w : c.dem.warnings) fmt::print(stderr, "warning: {}\n", w);
     if (!a->output.empty()) c.output.directory = a->output;
-    for (auto& m : sim.modules)  // breakage writes its event log and ledger beside the others
-      if (auto* b = dynamic_cast<breakage::BreakageModule*>(m.get()))
-        b->set_output_directory(c.output.directory);
     auto module = std::make_unique<io::OutputModule>(c.output, c.dem.end_time);
     io::OutputModule& output = *module;
     sim.modules.push_back(std::move(module));  // last: sees the step after every other module

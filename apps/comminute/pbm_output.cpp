@@ -4,10 +4,9 @@
 #include <fmt/os.h>
 
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 
-#include "comminute/core/atomic_file.hpp"
+#include "comminute/core/csv_table.hpp"
 
 namespace comminute::app {
 
@@ -26,12 +25,23 @@ void write_distributions(const std::filesystem::path& file, const pbm::Problem& 
                          const std::vector<double>& times,
                          const std::vector<Eigen::VectorXd>& number) {
   using analysis::Basis;
-  AtomicFile f(file);
-  auto& o = f.stream();
-  o << "time_s,class,size_lower_m,size_upper_m,size_pivot_m,volume_pivot_m3,number,mass_kg,"
-       "number_fraction,volume_fraction,mass_fraction,"
-       "number_density_1_per_m,volume_density_1_per_m,mass_density_1_per_m,"
-       "cumulative_number,cumulative_volume,cumulative_mass\n";
+  Table t("distributions", {{"time", "s"},
+                            {"class", "-"},
+                            {"size_lower", "m"},
+                            {"size_upper", "m"},
+                            {"size_pivot", "m"},
+                            {"volume_pivot", "m^3"},
+                            {"number", "-"},
+                            {"mass", "kg"},
+                            {"number_fraction", "-"},
+                            {"volume_fraction", "-"},
+                            {"mass_fraction", "-"},
+                            {"number_density", "1/m"},
+                            {"volume_density", "1/m"},
+                            {"mass_density", "1/m"},
+                            {"cumulative_number", "-"},
+                            {"cumulative_volume", "-"},
+                            {"cumulative_mass", "-"}});
   for (std::size_t k = 0; k < times.size(); ++k) {
     const auto d = distribution(p, number[k]);
     const auto mass = d.amounts(Basis::mass);
@@ -43,28 +53,31 @@ void write_distributions(const std::filesystem::path& file, const pbm::Problem& 
       cum.push_back(d.cumulative(b));
     }
     for (std::size_t i = 0; i < d.classes(); ++i) {
-      o << fmt::format("{:.9g},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g}", times[k], i,
-                       p.grid.size_edge(i), p.grid.size_edge(i + 1), p.grid.pivot_size(i),
-                       p.grid.pivot_volume(i), number[k][static_cast<Eigen::Index>(i)], mass[i]);
+      std::vector<Cell> row = {times[k],
+                               i,
+                               p.grid.size_edge(i),
+                               p.grid.size_edge(i + 1),
+                               p.grid.pivot_size(i),
+                               p.grid.pivot_volume(i),
+                               number[k][static_cast<Eigen::Index>(i)],
+                               mass[i]};
       for (const auto* v : {&frac, &dens, &cum})
-        for (const auto& col : *v) o << fmt::format(",{:.9g}", col[i]);
-      o << "\n";
+        for (const auto& col : *v) row.emplace_back(col[i]);
+      t.add_row(row);
     }
   }
-  f.commit();
+  t.write_file(file);
 }
 
 void write_models(const std::filesystem::path& dir, const pbm::Problem& p, const pbm::Solution& s) {
   const auto& g = p.grid;
   {
-    AtomicFile f(dir / "rates.csv");
-    f.stream() << "class,size_m,rate_1_per_s\n";
-    for (std::size_t i = 0; i < g.classes(); ++i)
-      f.stream() << fmt::format("{},{:.9g},{:.9g}\n", i, s.rate_sizes[i], s.rates[i]);
-    f.commit();
+    Table rates("rates", {{"class", "-"}, {"size", "m"}, {"rate", "1/s"}});
+    for (std::size_t i = 0; i < g.classes(); ++i) rates.add_row({i, s.rate_sizes[i], s.rates[i]});
+    rates.write(dir);
   }
-  AtomicFile f(dir / "breakage_function.csv");
-  f.stream() << "parent_size_m,size_ratio,cumulative_mass_passing\n";
+  Table b("breakage_function",
+          {{"parent_size", "m"}, {"size_ratio", "-"}, {"cumulative_mass_passing", "-"}});
   const std::size_t n = g.classes();
   std::size_t dominant = 0;  // UFRJ: progeny at the energy class carrying most collision energy
   if (p.mill) {
@@ -77,20 +90,21 @@ void write_models(const std::filesystem::path& dir, const pbm::Problem& p, const
     const double y = g.pivot_volume(k);
     for (int j = 0; j <= 120; ++j) {
       const double r = std::pow(10.0, -4.0 + 4.0 * j / 120.0);  // d/D from 1e-4 to 1
-      const double b = p.mill ? p.mill->progeny(k, dominant).passing(r)
-                              : p.function->cumulative_mass(y * r * r * r, y);
-      f.stream() << fmt::format("{:.9g},{:.9g},{:.9g}\n", g.pivot_size(k), r, b);
+      const double cum = p.mill ? p.mill->progeny(k, dominant).passing(r)
+                                : p.function->cumulative_mass(y * r * r * r, y);
+      b.add_row({g.pivot_size(k), r, cum});
     }
   }
-  f.commit();
+  b.write(dir);
   if (s.median_fracture_energy.empty()) return;
-  AtomicFile fe(dir / "fracture_energy.csv");
-  fe.stream() << "time_s,class,size_pivot_m,median_fracture_energy_J_per_kg\n";
+  Table fe(
+      "fracture_energy",
+      {{"time", "s"}, {"class", "-"}, {"size_pivot", "m"}, {"median_fracture_energy", "J/kg"}});
   for (std::size_t t = 0; t < s.times.size(); ++t)
     for (std::size_t i = 0; i < n; ++i)
-      fe.stream() << fmt::format("{:.9g},{},{:.9g},{:.9g}\n", s.times[t], i, g.pivot_size(i),
-                                 s.median_fracture_energy[t][static_cast<Eigen::Index>(i)]);
-  fe.commit();
+      fe.add_row({s.times[t], i, g.pivot_size(i),
+                  s.median_fracture_energy[t][static_cast<Eigen::Index>(i)]});
+  fe.write(dir);
 }
 
 void plot(const std::string& kind, const std::filesystem::path& dir) {

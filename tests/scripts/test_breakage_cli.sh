@@ -16,10 +16,13 @@ sed -e 's/^count = 200/count = 20/' -e 's/^end_time = 0.003 /end_time = 0.001 /'
 for f in breakage_events.csv breakage_ledger.csv size_distribution.csv breakage_model.csv; do
   [ -s "$work/out/$f" ] || { echo "missing $f"; cat "$work/log"; exit 1; }
 done
+head -1 "$work/out/breakage_events.csv" | grep -q '^time \[s\],parent_id \[-\],.*,broken \[-\],' ||
+  { echo "breakage_events.csv header"; head -1 "$work/out/breakage_events.csv"; exit 1; }
 broken=$(awk -F, 'NR > 1 && $12 == 1' "$work/out/breakage_events.csv" | wc -l)
 [ "$broken" -gt 0 ] || { echo "no breakage in the drop-weight run"; exit 1; }
 # Mass: particles + fines booked as mass equal the initial 20 x 1.41372 g (to 1e-9 relative;
-# the CSV prints 12 significant digits).
+# the CSV prints every double in full, columns 6 and 7 are particle_mass [kg] and fines_mass [kg];
+# row 2 is the sample at the start, the last row the one at the run's end time).
 awk -F, 'NR == 2 {m0 = $6 + $7} END {m = $6 + $7; d = (m - m0) / m0; if (d < 0) d = -d;
   if (d > 1e-9) {print "mass changed by", d; exit 1}}' "$work/out/breakage_ledger.csv"
 /usr/bin/python3 "$src/scripts/plot_breakage.py" "$work/out" -o "$work/png" > /dev/null

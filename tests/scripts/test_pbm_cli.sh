@@ -23,7 +23,7 @@ for c in batch_grinding carbon_black ball_mill_spectrum ball_mill_ufrj; do
   check "$c runs (rc $rc)" test $rc -eq 0
   drift=$(echo "$out" | sed -n 's/.*relative change of total mass \([-0-9.e+]*\).*/\1/p')
   check "$c mass drift $drift below 1e-12" python3 -c "import sys; sys.exit(abs(float('$drift')) >= 1e-12)"
-  check "$c distributions.csv header" grep -q '^time_s,class,size_lower_m,size_upper_m' ${c}_out/distributions.csv
+  check "$c distributions.csv header" grep -q '^time \[s\],class \[-\],size_lower \[m\],size_upper \[m\]' ${c}_out/distributions.csv
   check "$c no partial files" test -z "$(ls ${c}_out/*.part 2>/dev/null)"
 done
 
@@ -92,8 +92,8 @@ out=$("$bin" calibrate --no-plots short.toml 2>&1)
 rc=$?
 check "short calibration runs (rc $rc)" test $rc -eq 0
 check "progress line per start" test "$(grep -c 'starts done' <<<"$out")" -eq 2
-check "starts.csv has a row per start" test "$(grep -vc '^start,' short_out/starts.csv)" -eq 2
-check "fit.csv covers all three data sets" test "$(cut -d, -f1 short_out/fit.csv | sort -u | grep -vc dataset)" -eq 3
+check "starts.csv has a row per start" test "$(grep -vc '^start \[-\],' short_out/starts.csv)" -eq 2
+check "fit.csv covers all three data sets" test "$(cut -d, -f1 short_out/fit.csv | sort -u | grep -vc 'dataset \[-\]')" -eq 3
 check "best_parameters.csv names the keys" grep -q '^rate.sigma_inf,' short_out/best_parameters.csv
 
 # --- a failing plot script warns and does not fail the run

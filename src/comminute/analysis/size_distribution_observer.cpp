@@ -1,10 +1,7 @@
 #include "comminute/analysis/size_distribution_observer.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 
-#include "comminute/core/atomic_file.hpp"
 #include "comminute/engine/simulation.hpp"
 
 namespace comminute::analysis {
@@ -37,15 +34,16 @@ void SizeDistributionObserver::setup(Simulation& sim) {
   }
 }
 
-void SizeDistributionObserver::end_of_step(Simulation& sim) {
-  const double interval = interval_ > 0 ? interval_ : 2000 * sim.dt;
-  if (sim.time + 0.5 * sim.dt < next_) return;
-  record(sim);
-  write(sim);
-  next_ = sim.time + interval;
+Cadence SizeDistributionObserver::output_cadence() const {
+  Cadence c;
+  if (interval_ > 0)
+    c.interval = interval_;
+  else
+    c.steps = 2000;
+  return c;
 }
 
-void SizeDistributionObserver::record(const Simulation& sim) {
+void SizeDistributionObserver::sample(const Simulation& sim) {
   const auto& p = sim.particles;
   const std::size_t nm = sim.materials.size();
   const auto passing = mass_passing(p, final_diameters(p), sieves_, nm, breakage_->fines_mass());
@@ -60,28 +58,26 @@ void SizeDistributionObserver::record(const Simulation& sim) {
   }
 }
 
-void SizeDistributionObserver::write(const Simulation& sim) const {
-  if (breakage_->output_directory().empty()) return;
-  AtomicFile f(breakage_->output_directory() / "size_distribution.csv");
-  auto& o = f.stream();
-  o << "time_s,material,sieve_m,mass_passing_kg,fraction_passing\n";
+std::vector<Table> SizeDistributionObserver::tables(const Simulation& sim) const {
+  Table t("size_distribution", {{"time", "s"},
+                                {"material", "-"},
+                                {"sieve", "m"},
+                                {"mass_passing", "kg"},
+                                {"fraction_passing", "-"}});
   for (const auto& r : rows_)
-    o << fmt::format("{:.9g},{},{:.9g},{:.12g},{:.9g}\n", r.time,
-                     sim.materials.material(static_cast<std::uint16_t>(r.material)).name,
-                     sieves_[r.sieve], r.passing, r.passing / r.total);
-  f.commit();
+    t.add_row({r.time, sim.materials.material(static_cast<std::uint16_t>(r.material)).name,
+               sieves_[r.sieve], r.passing, r.passing / r.total});
+  return {t};
 }
 
 void SizeDistributionObserver::save(Archive& a) const {
   a.put("size_distribution/sieves", sieves_);
   a.put("size_distribution/rows", rows_);
-  a.put_value("size_distribution/next", next_);
 }
 
 void SizeDistributionObserver::load(const Archive& a) {
   sieves_ = a.get<double>("size_distribution/sieves");
   rows_ = a.get<Row>("size_distribution/rows");
-  next_ = a.get_value<double>("size_distribution/next");
 }
 
 }  // namespace comminute::analysis

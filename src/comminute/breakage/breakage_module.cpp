@@ -9,7 +9,6 @@
 #include <unordered_set>
 
 #include "comminute/breakage/criteria/fracture_energy.hpp"
-#include "comminute/core/atomic_file.hpp"
 #include "comminute/core/error.hpp"
 #include "comminute/core/parallel.hpp"
 #include "comminute/core/units.hpp"
@@ -29,12 +28,7 @@ BreakageModule::BreakageModule(std::vector<std::optional<MaterialBreakage>> per_
                                BreakageOptions opt)
     : materials_(std::move(per_material)), opt_(std::move(opt)) {}
 
-BreakageModule::~BreakageModule() {
-  try {
-    if (configured_) write_outputs();
-  } catch (...) {  // a destructor must not throw; the outputs were written at intervals
-  }
-}
+BreakageModule::~BreakageModule() = default;
 
 void BreakageModule::register_fields(ParticleStore& p) {
   for (auto& m : materials_)
@@ -75,7 +69,6 @@ void BreakageModule::configure(Simulation& sim) {
   fines_mass_.resize(n_materials_, 0.0);
   pending_ = 0;
   for (std::size_t i = 0; i < p.size(); ++i) pending_ += (p.flags[i] & pflag::growing) ? 1 : 0;
-  if (!opt_.output_dir.empty()) std::filesystem::create_directories(opt_.output_dir);
   configured_ = true;
 }
 
@@ -402,12 +395,6 @@ void BreakageModule::end_of_step(Simulation& sim) {
     broken_ids_.clear();
     broken_records_.clear();
   }
-  const double interval = opt_.output_interval > 0 ? opt_.output_interval : 1000 * sim.dt;
-  if (sim.time + 0.5 * sim.dt >= next_output_) {
-    ledger_row(sim);
-    if (!opt_.output_dir.empty()) write_outputs();
-    next_output_ = sim.time + interval;
-  }
 }
 
 void BreakageModule::replace(Simulation& sim, std::size_t parent,
@@ -541,96 +528,6 @@ void BreakageModule::replace(Simulation& sim, std::size_t parent,
   log_.push_back(rec);
 }
 
-void BreakageModule::ledger_row(const Simulation& sim) {
-  LedgerRow r{};
-  r.time = sim.time;
-  r.removed_total = sim.ledger.removed;
-  r.breakage_removed = removed_;
-  r.created = created_;
-  r.particle_mass = sim.particles.total_mass();
-  for (double m : fines_mass_) r.fines_mass += m;
-  r.momentum = sim.particles.total_momentum();
-  r.fines_momentum = fines_momentum_;
-  r.events = events_;
-  r.breakages = breakages_;
-  r.pending = pending_;
-  r.particles = sim.particles.size();
-  ledger_.push_back(r);
-}
-
-void BreakageModule::write_outputs() const {
-  if (opt_.output_dir.empty()) return;
-  write_model_curves();
-  {
-    AtomicFile f(opt_.output_dir / "breakage_events.csv");
-    auto& o = f.stream();
-    o << "time_s,parent_id,material,generation,diameter_m,mass_kg,specific_energy_J_per_kg,peak_"
-         "force_N,"
-         "strength,strength_unit,damage_before,broken,fragments,fines_particles,fines_mass_kg,"
-         "t10_percent\n";
-    for (const auto& r : log_) {
-      const auto& m = materials_[r.material];
-      o << fmt::format(
-          "{:.9g},{},{},{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{},{:.9g},{},{},{},{:.9g},{:.9g}\n",
-          r.time, r.parent_id, r.material, r.generation, r.diameter, r.mass, r.specific_energy,
-          r.peak_force, r.strength, m ? m->criterion->strength_unit() : "", r.damage_before,
-          r.broken, r.fragments, r.fines_particles, r.fines_mass, r.t10);
-    }
-    f.commit();
-  }
-  {
-    AtomicFile f(opt_.output_dir / "breakage_ledger.csv");
-    auto& o = f.stream();
-    o << "time_s,events,breakages,pending_fragments,particles,particle_mass_kg,fines_mass_kg,"
-         "removed_energy_total_J,removed_energy_breakage_J,created_elastic_energy_J,momentum_x_kg_"
-         "m_per_s,"
-         "momentum_y_kg_m_per_s,momentum_z_kg_m_per_s,fines_momentum_x_kg_m_per_s,"
-         "fines_momentum_y_kg_m_per_s,fines_momentum_z_kg_m_per_s\n";
-    for (const auto& r : ledger_)
-      o << fmt::format(
-          "{:.9g},{},{},{},{},{:.12g},{:.12g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},"
-          "{:.9g},{:.9g},{:.9g}\n",
-          r.time, r.events, r.breakages, r.pending, r.particles, r.particle_mass, r.fines_mass,
-          r.removed_total, r.breakage_removed, r.created, r.momentum.x, r.momentum.y, r.momentum.z,
-          r.fines_momentum.x, r.fines_momentum.y, r.fines_momentum.z);
-    f.commit();
-  }
-}
-
-void BreakageModule::write_model_curves() const {
-  // Model curves for the plots, per material at the mean diameter of its logged events of the
-  // first generation (all events when there are none):
-  // breakage probability of a fresh particle and t10 versus absorbed specific energy.
-  AtomicFile f(opt_.output_dir / "breakage_model.csv");
-  auto& o = f.stream();
-  o << "material,diameter_m,specific_energy_J_per_kg,probability,t10_percent\n";
-  for (std::size_t m = 0; m < materials_.size(); ++m) {
-    if (!materials_[m]) continue;
-    double d = 0, e_max = 0;
-    std::size_t n = 0;
-    bool first_generation = false;
-    for (const auto& r : log_) first_generation |= r.material == m && r.generation == 0;
-    for (const auto& r : log_)
-      if (r.material == m && (!first_generation || r.generation == 0)) {
-        d += r.diameter;
-        e_max = std::max(e_max, r.specific_energy);
-        ++n;
-      }
-    if (n == 0) continue;
-    d /= static_cast<double>(n);
-    const MaterialBreakage& mat = *materials_[m];
-    double e50b = mat.criterion->median_fracture_energy(d);
-    if (e50b <= 0) e50b = mat.reference_energy;
-    const bool energy_criterion = mat.criterion->strength_unit() == "J/kg";
-    for (int k = 0; k <= 200; ++k) {
-      const double e = 1.5 * e_max * k / 200.0;
-      const double prob = energy_criterion ? mat.criterion->probability(d, {e, 0.0}) : -1.0;
-      o << fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g}\n", m, d, e, prob, mat.progeny.t10(e, e50b));
-    }
-  }
-  f.commit();
-}
-
 void BreakageModule::save(Archive& a) const {
   const auto s1 = strength_rng_.state(), s2 = placement_rng_.state();
   a.put("breakage/strength_rng", std::vector<std::uint64_t>(s1.begin(), s1.end()));
@@ -641,8 +538,7 @@ void BreakageModule::save(Archive& a) const {
   a.put("breakage/counters", std::vector<std::uint64_t>{breakages_, events_});
   a.put_value("breakage/removed", removed_);
   a.put_value("breakage/created", created_);
-  a.put_value("breakage/next_output", next_output_);
-  a.put("breakage/ledger", ledger_);
+  series_.save(a);
 }
 
 void BreakageModule::load(const Archive& a) {
@@ -661,8 +557,7 @@ void BreakageModule::load(const Archive& a) {
   events_ = c.at(1);
   removed_ = a.get_value<double>("breakage/removed");
   created_ = a.get_value<double>("breakage/created");
-  next_output_ = a.get_value<double>("breakage/next_output");
-  ledger_ = a.get<LedgerRow>("breakage/ledger");
+  series_.load(a);
   configured_ = false;  // pre_force() rebuilds what depends on the simulation
 }
 

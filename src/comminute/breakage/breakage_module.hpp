@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "comminute/breakage/breakage_series.hpp"
 #include "comminute/breakage/criteria/breakage_criterion.hpp"
 #include "comminute/breakage/placement/fragment_placement.hpp"
 #include "comminute/breakage/progeny/progeny_sizes.hpp"
@@ -54,8 +55,7 @@ struct BreakageOptions {
   int replacement_interval = 1;  // replace broken parents every this many steps (batched; each
                                  // replacement makes the engine rebuild its neighbour list)
   bool log_all_events = false;   // also log events that did not break (probability plots)
-  std::filesystem::path output_dir;  // event log and ledger; empty = no files
-  double output_interval = 0;        // s between ledger rows / file rewrites (0: every 1000 steps)
+  double output_interval = 0;    // s between ledger rows / table rewrites (0: every 1000 steps)
 };
 
 // One row of the event log (SI units; strength in the criterion's unit).
@@ -87,8 +87,6 @@ class BreakageModule final : public Module {
   // Registers the module's and the criteria's per-particle fields. Called by setup(); call it
   // once right after construction as well, so that a checkpoint restores the fields.
   void register_fields(ParticleStore& p);
-  void set_output_directory(const std::filesystem::path& dir) { opt_.output_dir = dir; }
-  const std::filesystem::path& output_directory() const { return opt_.output_dir; }
   // Breakage reads each contact's loading record.
   void declare_contact_state(ContactPipeline& c) override { c.require_loading_record(); }
   void setup(Simulation& sim) override;
@@ -97,6 +95,8 @@ class BreakageModule final : public Module {
   void end_of_step(Simulation& sim) override;
   void save(Archive& a) const override;
   void load(const Archive& a) override;
+  // Event log, ledger and model curves (breakage_series.hpp), written by the output module.
+  SeriesSource* series_source() override { return &series_; }
 
   // Fragments still growing to full size.
   std::size_t pending() const { return pending_; }
@@ -114,8 +114,6 @@ class BreakageModule final : public Module {
   const MaterialBreakage* material(std::size_t k) const {
     return k < materials_.size() && materials_[k] ? &*materials_[k] : nullptr;
   }
-  // Rewrites the output files (also done at output intervals and on destruction).
-  void write_outputs() const;
 
  private:
   void configure(Simulation& sim);  // what depends on the simulation (after setup or load)
@@ -125,8 +123,6 @@ class BreakageModule final : public Module {
                const EventRecord& rec);
   void add_energy(Simulation& sim, double joules);  // elastic energy created by placement/growth
   void grow(Simulation& sim);
-  void ledger_row(const Simulation& sim);
-  void write_model_curves() const;
 
   std::vector<std::optional<MaterialBreakage>> materials_;
   BreakageOptions opt_;
@@ -153,13 +149,7 @@ class BreakageModule final : public Module {
   Vec3 fines_momentum_;
   double removed_ = 0;
   double created_ = 0;
-  struct LedgerRow {
-    double time, removed_total, breakage_removed, created, particle_mass, fines_mass;
-    Vec3 momentum, fines_momentum;
-    std::uint64_t events, breakages, pending, particles;
-  };
-  std::vector<LedgerRow> ledger_;
-  double next_output_ = 0;
+  BreakageSeries series_{*this, opt_.output_interval};
   bool configured_ = false;
 };
 

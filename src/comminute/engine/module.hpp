@@ -13,6 +13,7 @@ namespace comminute {
 
 class Simulation;
 class ContactPipeline;
+class SeriesSource;
 
 class Module {
  public:
@@ -28,6 +29,8 @@ class Module {
   // Checkpoint: put/get the module's state under names prefixed with name() + "/".
   virtual void save(Archive&) const {}
   virtual void load(const Archive&) {}
+  // The tables this module offers to the outputs (series_source.hpp), or null.
+  virtual SeriesSource* series_source() { return nullptr; }
 };
 
 }  // namespace comminute

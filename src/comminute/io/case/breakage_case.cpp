@@ -80,8 +80,7 @@ breakage::MaterialBreakage read_material(const CaseTable& b, const Material& mat
 
 }  // namespace
 
-breakage::BreakageModule* add_breakage(const CaseTable& root, DemCase& dem,
-                                       const std::filesystem::path& output_dir) {
+breakage::BreakageModule* add_breakage(const CaseTable& root, DemCase& dem) {
   Simulation& sim = *dem.sim;
   std::vector<std::optional<breakage::MaterialBreakage>> mats(sim.materials.size());
   bool any = false;
@@ -115,7 +114,6 @@ breakage::BreakageModule* add_breakage(const CaseTable& root, DemCase& dem,
     if (g->has("sieves")) sieves.sieves = g->numbers("sieves", Limits::positive());
     sieves.bottom = g->number("sieve_bottom", Limits::non_negative(), 0.0);
   }
-  opt.output_dir = output_dir;
   // Fragments are smaller than the inserted particles: the time step must resolve the smallest
   // one breakage can create, max(min_fragment_size, min_fragment_ratio x min_breakable_size).
   const CaseTable simulation = root.table("simulation");

@@ -2,8 +2,6 @@
 // Builds the breakage module from a case file: [materials.<name>.breakage] per material (the
 // criterion by name and its parameters, progeny, fines, minimum sizes) and the optional
 // [breakage] table (placement, growth, events, outputs). Every key: docs/breakage.md.
-#include <filesystem>
-
 #include "comminute/breakage/breakage_module.hpp"
 #include "comminute/core/case_table.hpp"
 #include "comminute/engine/simulation.hpp"
@@ -12,11 +10,10 @@
 namespace comminute::io {
 
 // When at least one material has a breakage table, appends a BreakageModule (and a size
-// distribution observer writing into `output_dir`) to sim.modules and returns the module;
-// otherwise returns nullptr. Call after build_dem_case and before CaseFile::reject_unknown().
-// Lowers the time step for the smallest fragment when the case did not set it (the change is
-// added to dem.time_step_note).
-breakage::BreakageModule* add_breakage(const CaseTable& root, DemCase& dem,
-                                       const std::filesystem::path& output_dir);
+// distribution observer; both offer their tables to the output module) to sim.modules and
+// returns the module; otherwise returns nullptr. Call after build_dem_case and before
+// CaseFile::reject_unknown(). Lowers the time step for the smallest fragment when the case did not
+// set it (the change is added to dem.time_step_note).
+breakage::BreakageModule* add_breakage(const CaseTable& root, DemCase& dem);
 
 }  // namespace comminute::io

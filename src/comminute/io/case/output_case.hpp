@@ -7,17 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "comminute/core/cadence.hpp"
 #include "comminute/core/case_table.hpp"
 
 namespace comminute::io {
 
-// How often a series is written: every `interval` seconds of simulated time or every `steps`
-// steps; neither set = the series' default (a fraction of the run, or never for checkpoints).
-struct Cadence {
-  double interval = 0;      // s
-  std::uint64_t steps = 0;  // steps
-  bool is_set() const { return interval > 0 || steps > 0; }
-};
+using comminute::Cadence;  // core/cadence.hpp
 
 struct OutputOptions {
   std::filesystem::path directory = "output";

@@ -14,30 +14,17 @@
 
 namespace comminute::io {
 
-// A time-based output is due at the step nearest to k * interval (within half a step).
-bool OutputModule::Schedule::due(double time, std::uint64_t step, double dt) const {
-  if (step == last_step) return false;
-  if (cadence.steps > 0) return step % cadence.steps == 0;
-  if (cadence.interval > 0)
-    return time >= static_cast<double>(next_index) * cadence.interval - 0.5 * dt;
-  return false;
-}
-
-void OutputModule::Schedule::done(double time, std::uint64_t step, double dt) {
-  last_step = step;
-  if (cadence.interval > 0)  // skip outputs missed when the interval is shorter than a step
-    next_index = static_cast<std::uint64_t>(std::floor((time + 0.5 * dt) / cadence.interval)) + 1;
-}
-
 OutputModule::OutputModule(OutputOptions options, double end_time) : options_(std::move(options)) {
-  particles_.cadence = options_.particles_cadence;
-  if (!particles_.cadence.is_set()) particles_.cadence.interval = end_time / 100;
-  timeseries_.cadence = options_.timeseries_cadence;
-  if (!timeseries_.cadence.is_set()) timeseries_.cadence.interval = end_time / 1000;
-  checkpoint_.cadence = options_.checkpoint_cadence;
+  Cadence particles = options_.particles_cadence;
+  if (!particles.is_set()) particles.interval = end_time / 100;
+  if (!options_.particles) particles = {};
+  particles_ = OutputSchedule(particles);
+  Cadence timeseries = options_.timeseries_cadence;
+  if (!timeseries.is_set()) timeseries.interval = end_time / 1000;
+  timeseries_ = OutputSchedule(timeseries);
   // A checkpoint at the start would only repeat the case file: the first one is one period in.
-  checkpoint_.next_index = 1;
-  if (!options_.particles) particles_.cadence = {};
+  checkpoint_ = OutputSchedule(options_.checkpoint_cadence, 1);
+  timeseries_cadence_ = timeseries;
 }
 
 // Field names can only be checked once the modules have registered their fields (setup).
@@ -61,9 +48,19 @@ void OutputModule::start(Simulation& sim) {
   for (const auto& w : sim.walls) names.push_back(w->name);
   csv_ = std::make_unique<TimeSeriesWriter>(timeseries_path(), names);
   vtk_ = std::make_unique<VtkWriter>(options_.directory, options_.fields);
+  for (const auto& m : sim.modules)
+    if (SeriesSource* s = m->series_source()) {
+      const Cadence c = s->output_cadence();
+      Source src{m->name(), s, OutputSchedule(c.is_set() ? c : timeseries_cadence_)};
+      if (const auto it = loaded_sources_.find(src.name); it != loaded_sources_.end())
+        src.schedule.set_state(it->second.at(0), it->second.at(1));
+      sources_.push_back(std::move(src));
+    }
   if (resume_time_) {
     csv_->resume(*resume_time_);
     vtk_->resume(*resume_time_);
+    // The tables as of the checkpoint: drops rows a killed run wrote after it.
+    for (const auto& s : sources_) write_tables(s, sim);
     return;
   }
   std::filesystem::create_directories(options_.directory);
@@ -76,6 +73,7 @@ void OutputModule::start(Simulation& sim) {
   }
   write_row(sim);
   timeseries_.done(sim.time, sim.step_count, sim.dt);
+  for (auto& s : sources_) sample(s, sim);
 }
 
 void OutputModule::end_of_step(Simulation& sim) {
@@ -90,6 +88,8 @@ void OutputModule::end_of_step(Simulation& sim) {
     write_row(sim);
     timeseries_.done(t, s, dt);
   }
+  for (auto& src : sources_)
+    if (src.schedule.due(t, s, dt)) sample(src, sim);
   if (checkpoint_.due(t, s, dt)) write_checkpoint(sim);
 }
 
@@ -97,15 +97,17 @@ void OutputModule::finish(Simulation& sim) {
   if (!started_) start(sim);
   const double t = sim.time, dt = sim.dt;
   const std::uint64_t s = sim.step_count;
-  if (options_.particles && particles_.last_step != s) {
+  if (options_.particles && !particles_.written_at(s)) {
     write_snapshot(sim);
     particles_.done(t, s, dt);
   }
-  if (timeseries_.last_step != s) {
+  if (!timeseries_.written_at(s)) {
     write_row(sim);
     timeseries_.done(t, s, dt);
   }
-  if (checkpoint_.last_step != s) write_checkpoint(sim);
+  for (auto& src : sources_)
+    if (!src.schedule.written_at(s)) sample(src, sim);
+  if (!checkpoint_.written_at(s)) write_checkpoint(sim);
 }
 
 void OutputModule::write_checkpoint(Simulation& sim) {
@@ -132,6 +134,16 @@ void OutputModule::write_row(Simulation& sim) {
   csv_->append(sim.observe(), sim.walls);
 }
 
+void OutputModule::sample(Source& s, const Simulation& sim) {
+  s.source->sample(sim);
+  write_tables(s, sim);
+  s.schedule.done(sim.time, sim.step_count, sim.dt);
+}
+
+void OutputModule::write_tables(const Source& s, const Simulation& sim) const {
+  for (const Table& t : s.source->tables(sim)) t.write(options_.directory);
+}
+
 // Half-size of drawn infinite planes: the largest edge of the box around the particles and the
 // finite walls, so a plane spans the scene; 1 m when there is nothing yet to measure.
 double OutputModule::wall_extent(const Simulation& sim) const {
@@ -153,24 +165,31 @@ double OutputModule::wall_extent(const Simulation& sim) const {
 }
 
 void OutputModule::save(Archive& a) const {
-  const std::vector<std::uint64_t> state = {particles_.next_index,  particles_.last_step,
-                                            timeseries_.next_index, timeseries_.last_step,
-                                            checkpoint_.next_index, checkpoint_.last_step};
+  std::vector<std::uint64_t> state;
+  for (const auto* sc : {&particles_, &timeseries_, &checkpoint_})
+    for (std::uint64_t v : sc->state()) state.push_back(v);
   a.put("output/schedule", state);
   a.put("output/wall_extent", std::vector<double>{extent_});
+  for (const auto& s : sources_) a.put("output/series/" + s.name, s.schedule.state());
 }
 
 void OutputModule::load(const Archive& a) {
   const auto s = a.get<std::uint64_t>("output/schedule");
   if (s.size() != 6) throw Error("checkpoint entry 'output/schedule' has a wrong size");
-  particles_.next_index = s[0];
-  particles_.last_step = s[1];
-  timeseries_.next_index = s[2];
-  timeseries_.last_step = s[3];
-  checkpoint_.next_index = s[4];
-  checkpoint_.last_step = s[5];
+  particles_.set_state(s[0], s[1]);
+  timeseries_.set_state(s[2], s[3]);
+  checkpoint_.set_state(s[4], s[5]);
   extent_ = a.get<double>("output/wall_extent").at(0);
+  const std::string prefix = "output/series/";
+  loaded_sources_.clear();
+  for (const auto& [name, bytes] : a.entries())
+    if (name.starts_with(prefix)) {
+      auto v = a.get<std::uint64_t>(name);
+      if (v.size() != 2) throw Error("checkpoint entry '" + name + "' has a wrong size");
+      loaded_sources_[name.substr(prefix.size())] = std::move(v);
+    }
   resume_time_ = a.get<double>("sim/time").at(0);
+  sources_.clear();
   started_ = false;
 }
 

@@ -3,17 +3,26 @@
 //   <directory>/particles.pvd + particles/*.vtp   particle snapshots (ParaView)
 //   <directory>/walls.pvd + walls/*.vtp           wall surfaces with forces
 //   <directory>/timeseries.csv                    energies, contacts, wall forces vs time
+//   <directory>/<table>.csv                       the tables of every module that is a
+//                                                 SeriesSource (e.g. breakage_ledger.csv)
 //   <directory>/checkpoint.h5                     the latest checkpoint (restart from it)
+// One cadence scheme (OutputSchedule) for every series: the start of a fresh run, every interval
+// of the series, and always a last output at the run's end time (finish()).
 // Add it to Simulation::modules; call start() once before stepping (after setup() or load()) and
 // finish() at the end or on a stop. After Simulation::load() (a restart) the series continue:
 // entries after the checkpoint's time are dropped, earlier ones are kept.
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "comminute/engine/module.hpp"
+#include "comminute/engine/series_source.hpp"
 #include "comminute/io/case/output_case.hpp"
+#include "comminute/io/output/output_schedule.hpp"
 #include "comminute/io/output/timeseries_csv.hpp"
 #include "comminute/io/output/vtk_writer.hpp"
 
@@ -29,10 +38,12 @@ class OutputModule : public Module {
   void save(Archive& a) const override;
   void load(const Archive& a) override;
 
-  // Opens the series (fresh, or continued after load()); a fresh run also writes the initial
-  // state (snapshot and row at the start time).
+  // Opens the series (fresh, or continued after load()) and finds the modules that offer tables;
+  // a fresh run also writes the initial state (snapshot, row and a sample of every table at the
+  // start time); a continued run rewrites the tables as of the checkpoint.
   void start(Simulation& sim);
-  // Writes the last snapshot and row (unless written at this step already) and a checkpoint.
+  // Writes the last snapshot, row and sample of every table (those not written at this step
+  // already: the final row at the run's end time) and a checkpoint.
   void finish(Simulation& sim);
   // Writes <directory>/checkpoint.h5 now (atomically; the previous one stays until replaced).
   void write_checkpoint(Simulation& sim);
@@ -42,22 +53,25 @@ class OutputModule : public Module {
   std::filesystem::path timeseries_path() const { return options_.directory / "timeseries.csv"; }
 
  private:
-  // When a series is next due: time-based series count outputs (next at k * interval).
-  struct Schedule {
-    Cadence cadence;
-    std::uint64_t next_index = 0;                 // time-based
-    std::uint64_t last_step = ~std::uint64_t{0};  // step of the last output
-    bool due(double time, std::uint64_t step, double dt) const;
-    void done(double time, std::uint64_t step, double dt);
+  // A module's tables: sampled and rewritten on their own schedule.
+  struct Source {
+    std::string name;  // the module's name (checkpoint entry output/series/<name>)
+    SeriesSource* source;
+    OutputSchedule schedule;
   };
 
   void check_fields(const ParticleStore& p) const;
   void write_snapshot(Simulation& sim);
   void write_row(Simulation& sim);
+  void sample(Source& s, const Simulation& sim);  // a row now, tables rewritten
+  void write_tables(const Source& s, const Simulation& sim) const;
   double wall_extent(const Simulation& sim) const;
 
   OutputOptions options_;
-  Schedule particles_, timeseries_, checkpoint_;
+  OutputSchedule particles_, timeseries_, checkpoint_;
+  Cadence timeseries_cadence_;   // also the default of the sources
+  std::vector<Source> sources_;  // found at start()
+  std::map<std::string, std::vector<std::uint64_t>> loaded_sources_;  // by load(), for start()
   double extent_ = 0;                  // m, fixed at the first wall snapshot
   std::optional<double> resume_time_;  // set by load()
   bool started_ = false;

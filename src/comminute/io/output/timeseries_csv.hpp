@@ -1,6 +1,7 @@
 #pragma once
-// The time-series CSV: one header line naming every column with its unit, then one row per
-// output time, appended and flushed row by row so that a killed run keeps every complete row.
+// The time-series CSV of a run (a SeriesWriter: one header line naming every column with its
+// unit, then one row per output time, appended and flushed row by row so that a killed run keeps
+// every complete row):
 //
 //   time [s],step [-],particles [-],contacts [-],wall_contacts [-],kinetic_translational [J],
 //   kinetic_rotational [J],potential_gravity [J],elastic [J],dissipated_damping [J],
@@ -11,11 +12,11 @@
 // time when every energy flow is accounted for (a check, not a physical quantity).
 // Numbers are written in the shortest form that reads back to the same double.
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "comminute/core/series_writer.hpp"
 #include "comminute/engine/simulation.hpp"
 
 namespace comminute::io {
@@ -25,26 +26,23 @@ class TimeSeriesWriter {
   // Throws Error if a wall name is empty, repeated or holds a comma, quote or line break.
   TimeSeriesWriter(std::filesystem::path path, std::vector<std::string> wall_names);
 
-  static std::vector<std::string> columns(const std::vector<std::string>& wall_names);
+  static std::vector<Column> columns(const std::vector<std::string>& wall_names);
 
   // Fresh run: replaces any existing file by the header alone.
-  void start_fresh();
+  void start_fresh() { series_.start_fresh(); }
   // Restart from a checkpoint at time t: keeps the header and the complete rows with
   // time <= t, drops the rest (rows written after the checkpoint, a half-written last line).
   // Throws Error if the existing header is not this case's header. No file: starts fresh.
-  void resume(double t);
+  void resume(double t) { series_.resume(t); }
   // Appends one row (walls in the order given to the constructor) and flushes it.
   void append(const Observables& o, const std::vector<std::unique_ptr<Wall>>& walls);
 
-  const std::filesystem::path& path() const { return path_; }
-  std::string header() const;
+  const std::filesystem::path& path() const { return series_.path(); }
+  const std::string& header() const { return series_.header(); }
 
  private:
-  void open_for_append();
-
-  std::filesystem::path path_;
   std::vector<std::string> wall_names_;
-  std::ofstream out_;
+  SeriesWriter series_;
 };
 
 }  // namespace comminute::io

@@ -18,6 +18,7 @@ class SizeDistributionObserver final : public Module, public SeriesSource {
   SizeDistributionObserver(const breakage::BreakageModule* breakage, SieveOptions sieves,
                            double interval);
   std::string name() const override { return "size_distribution"; }
+  ModuleStage stage() const override { return ModuleStage::observation; }
   void setup(Simulation& sim) override;
   void save(Archive& a) const override;
   void load(const Archive& a) override;

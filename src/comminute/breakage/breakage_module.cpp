@@ -69,7 +69,6 @@ void BreakageModule::configure(Simulation& sim) {
   fines_mass_.resize(n_materials_, 0.0);
   pending_ = 0;
   for (std::size_t i = 0; i < p.size(); ++i) pending_ += (p.flags[i] & pflag::growing) ? 1 : 0;
-  configured_ = true;
 }
 
 void BreakageModule::initialize_particle(Simulation& sim, std::size_t i) {
@@ -213,11 +212,6 @@ void BreakageModule::grow(Simulation& sim) {
       [](double a, double b) { return a + b; });
   add_energy(sim, pair_energy[0] + tally[0].wall_energy);
   if (tally[0].rebuild) sim.particles_changed();
-}
-
-void BreakageModule::pre_force(Simulation& sim) {
-  // After Simulation::load() modules are not set up again: configure from the restored state.
-  if (!configured_) configure(sim);
 }
 
 void BreakageModule::post_force(Simulation& sim) {
@@ -558,7 +552,10 @@ void BreakageModule::load(const Archive& a) {
   removed_ = a.get_value<double>("breakage/removed");
   created_ = a.get_value<double>("breakage/created");
   series_.load(a);
-  configured_ = false;  // pre_force() rebuilds what depends on the simulation
+}
+
+void BreakageModule::restored(Simulation& sim) {
+  configure(sim);  // modules are not set up again after a checkpoint
 }
 
 }  // namespace comminute::breakage

@@ -90,11 +90,11 @@ class BreakageModule final : public Module {
   // Breakage reads each contact's loading record.
   void declare_contact_state(ContactPipeline& c) override { c.require_loading_record(); }
   void setup(Simulation& sim) override;
-  void pre_force(Simulation& sim) override;
   void post_force(Simulation& sim) override;
   void end_of_step(Simulation& sim) override;
   void save(Archive& a) const override;
   void load(const Archive& a) override;
+  void restored(Simulation& sim) override;
   // Event log, ledger and model curves (breakage_series.hpp), written by the output module.
   SeriesSource* series_source() override { return &series_; }
 
@@ -150,7 +150,6 @@ class BreakageModule final : public Module {
   double removed_ = 0;
   double created_ = 0;
   BreakageSeries series_{*this, opt_.output_interval};
-  bool configured_ = false;
 };
 
 }  // namespace comminute::breakage

@@ -36,6 +36,7 @@ class InsertionModule final : public Module {
  public:
   InsertionModule(InsertionSpec spec, std::uint64_t seed);
   std::string name() const override { return spec_.label; }
+  ModuleStage stage() const override { return ModuleStage::insertion; }
   void setup(Simulation& sim) override;
   void pre_force(Simulation& sim) override;
   void save(Archive& a) const override;

@@ -15,10 +15,20 @@ class Simulation;
 class ContactPipeline;
 class SeriesSource;
 
+// Where a module runs within each hook of a step. Modules run stage by stage in this order; within
+// a stage, in the order they were added.
+enum class ModuleStage : int {
+  insertion = 0,    // adds particles (fill, pour)
+  physics = 1,      // changes particles or forces (breakage, bonds)
+  observation = 2,  // measures (size distributions, statistics)
+  output = 3,       // writes what the others measured
+};
+
 class Module {
  public:
   virtual ~Module() = default;
   virtual std::string name() const = 0;
+  virtual ModuleStage stage() const { return ModuleStage::physics; }
   // Asks for per-contact state (e.g. the loading record) before the contact lists exist; called
   // once, at set-up or before a checkpoint is read.
   virtual void declare_contact_state(ContactPipeline&) {}
@@ -29,6 +39,8 @@ class Module {
   // Checkpoint: put/get the module's state under names prefixed with name() + "/".
   virtual void save(Archive&) const {}
   virtual void load(const Archive&) {}
+  // After a checkpoint was read (every module loaded; setup() is not called again).
+  virtual void restored(Simulation&) {}
   // The tables this module offers to the outputs (series_source.hpp), or null.
   virtual SeriesSource* series_source() { return nullptr; }
 };

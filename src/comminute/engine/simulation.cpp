@@ -18,6 +18,9 @@ Simulation::~Simulation() = default;
 void Simulation::assemble_contacts() {
   if (contacts_.assembled()) return;
   if (!law) throw Error("simulation has no contact law");
+  std::stable_sort(modules.begin(), modules.end(), [](const auto& a, const auto& b) {
+    return static_cast<int>(a->stage()) < static_cast<int>(b->stage());
+  });
   for (auto& m : modules) m->declare_contact_state(contacts_);
   const ContactStateStore& layout = contacts_.assemble(*law, rolling.get(), cohesion.get());
   pair_state_ = layout.same_layout();
@@ -193,6 +196,7 @@ void Simulation::load(const Archive& a) {
   flush_denormals_to_zero();
   elastic_energy_ = a.get_value<double>("sim/elastic");
   for (auto& m : modules) m->load(a);
+  for (auto& m : modules) m->restored(*this);
   // a module may have inserted or removed particles after the last force computation
   forces_cleared_ = a.get_value<std::uint8_t>("sim/forces_cleared") != 0;
   // Forces were saved with the particles, so the next step continues exactly; modules restored

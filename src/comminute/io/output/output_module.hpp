@@ -34,6 +34,7 @@ class OutputModule : public Module {
   OutputModule(OutputOptions options, double end_time);
 
   std::string name() const override { return "output"; }
+  ModuleStage stage() const override { return ModuleStage::output; }
   void end_of_step(Simulation& sim) override;  // writes what is due at this step
   void save(Archive& a) const override;
   void load(const Archive& a) override;

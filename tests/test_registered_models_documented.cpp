@@ -3,8 +3,6 @@
 // kFamilies.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -13,6 +11,7 @@
 #include "comminute/contact/rolling_resistance.hpp"
 #include "comminute/geometry/wall.hpp"
 #include "comminute/particles/size_distribution.hpp"
+#include "source_file.hpp"
 
 using namespace comminute;
 
@@ -32,23 +31,17 @@ const Family kFamilies[] = {
     {"WallRegistry", &WallRegistry::names, "docs/case-file.md"},
 };
 
-std::string read_doc(const std::string& relative) {
-  std::ifstream in(std::string(COMMINUTE_SOURCE_DIR) + "/" + relative);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 }  // namespace
 
 TEST(RegisteredModels, EveryNameHasItsRowInTheDocs) {
   for (const Family& f : kFamilies) {
-    const std::string doc = "\n" + read_doc(f.doc);
+    std::string doc = "\n";  // so that a row on the first line starts after a newline too
+    doc += comminute::testing::read_source_file(f.doc);
     ASSERT_GT(doc.size(), 1u) << f.doc << " is missing or empty";
     const std::vector<std::string> names = f.names();
     EXPECT_FALSE(names.empty()) << f.registry << " has no models";
     for (const std::string& name : names)
-      EXPECT_NE(doc.find("\n| `" + name + "`"), std::string::npos)
+      EXPECT_NE(doc.find(std::string("\n| `") + name + "`"), std::string::npos)
           << f.registry << " model \"" << name << "\" has no row \"| `" << name << "`\" in "
           << f.doc;
   }

@@ -22,9 +22,11 @@ std::vector<double> number_weights(const CaseTable& t, const std::vector<double>
     t.fail("fractions", fmt::format("has {} entries but diameters has {}", f.size(), d.size()));
   double sum = 0;
   for (double x : f) sum += x;
-  if (std::abs(sum - 1.0) > 1e-6) t.fail("fractions", fmt::format("fractions sum to {}, not 1", sum));
+  if (std::abs(sum - 1.0) > 1e-6)
+    t.fail("fractions", fmt::format("fractions sum to {}, not 1", sum));
   std::vector<double> w(d.size());
-  for (std::size_t k = 0; k < d.size(); ++k) w[k] = mass_fractions ? f[k] / std::pow(d[k], 3) : f[k];
+  for (std::size_t k = 0; k < d.size(); ++k)
+    w[k] = mass_fractions ? f[k] / std::pow(d[k], 3) : f[k];
   return w;
 }
 

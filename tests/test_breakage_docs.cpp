@@ -2,26 +2,17 @@
 // others in docs/case-file.md (as `key`); and each example builds without unknown keys.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "comminute/io/case/breakage_case.hpp"
 #include "comminute/io/case/dem_case.hpp"
 #include "comminute/io/case/output_case.hpp"
+#include "source_file.hpp"
 
 using namespace comminute;
-
-namespace {
-std::string read_doc(const std::string& name) {
-  std::ifstream in(std::string(COMMINUTE_SOURCE_DIR) + "/docs/" + name);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-}  // namespace
+using comminute::testing::read_source_file;
 
 TEST(BreakageDocs, EveryKeyOfTheBreakageExamplesIsDocumented) {
-  const std::string breakage_doc = read_doc("breakage.md"), case_doc = read_doc("case-file.md");
+  const std::string breakage_doc = read_source_file("docs/breakage.md"),
+                    case_doc = read_source_file("docs/case-file.md");
   ASSERT_FALSE(breakage_doc.empty());
   ASSERT_FALSE(case_doc.empty());
   for (const char* name : {"drop_weight", "slow_compression", "bed_impact", "repeated_impacts"}) {

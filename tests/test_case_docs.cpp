@@ -2,19 +2,14 @@
 // docs/case-file.md (as `key` in a table row).
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "comminute/io/case/dem_case.hpp"
 #include "comminute/io/case/output_case.hpp"
+#include "source_file.hpp"
 
 using namespace comminute;
 
 TEST(CaseDocs, EveryKeyOfTheDemExamplesIsDocumented) {
-  std::ifstream in(std::string(COMMINUTE_SOURCE_DIR) + "/docs/case-file.md");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string doc = ss.str();
+  const std::string doc = comminute::testing::read_source_file("docs/case-file.md");
   ASSERT_FALSE(doc.empty());
   for (const char* name : {"/examples/settle/settle.toml", "/examples/drum/rotating_drum.toml",
                            "/examples/piston/confined_compression.toml"}) {

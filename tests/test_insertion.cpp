@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "comminute/core/case_table.hpp"
 #include "comminute/engine/insertion.hpp"
 #include "comminute/geometry/box_wall.hpp"
 #include "dem_fixture.hpp"
@@ -15,8 +16,10 @@ using namespace comminute::testing;
 
 namespace {
 
-std::shared_ptr<const SizeDistribution> make_size(const std::string& name, SizeParameters p) {
-  return SizeDistributionRegistry::create(name, p);
+// A distribution from the text of its [insert.size] table, as the case builder makes it.
+std::shared_ptr<const SizeDistribution> make_size(const std::string& toml) {
+  const CaseTable t = CaseFile::parse(toml).root();
+  return SizeDistributionRegistry::create(t.string("distribution"), t);
 }
 
 InsertionSpec fill_spec(std::shared_ptr<const SizeDistribution> size) {
@@ -44,10 +47,7 @@ TEST(Insertion, FillPlacesCountWithoutOverlapInsideRegionAndWalls) {
   // a wall plane through the region: particles must stay clear of it
   sim->walls.push_back(
       std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{0.03, 0.03, 0.025}, std::array<bool, 6>{}));
-  SizeParameters sp;
-  sp.min = 0.001;
-  sp.max = 0.003;
-  InsertionSpec s = fill_spec(make_size("uniform", sp));
+  InsertionSpec s = fill_spec(make_size("distribution = 'uniform'\nmin = 0.001\nmax = 0.003"));
   s.count = 800;
   sim->modules.push_back(std::make_unique<InsertionModule>(s, 7));
   sim->dt = 1e-6;
@@ -63,9 +63,7 @@ TEST(Insertion, FillPlacesCountWithoutOverlapInsideRegionAndWalls) {
 
 TEST(Insertion, FillByVolumeFractionReachesIt) {
   auto sim = make_simulation({});
-  SizeParameters sp;
-  sp.diameter = 0.002;
-  InsertionSpec s = fill_spec(make_size("fixed", sp));
+  InsertionSpec s = fill_spec(make_size("distribution = 'fixed'\ndiameter = 0.002"));
   s.volume_fraction = 0.2;
   sim->modules.push_back(std::make_unique<InsertionModule>(s, 7));
   sim->dt = 1e-6;
@@ -78,9 +76,7 @@ TEST(Insertion, FillByVolumeFractionReachesIt) {
 
 TEST(Insertion, ImpossibleFillSaysHowManyFitted) {
   auto sim = make_simulation({});
-  SizeParameters sp;
-  sp.diameter = 0.01;
-  InsertionSpec s = fill_spec(make_size("fixed", sp));
+  InsertionSpec s = fill_spec(make_size("distribution = 'fixed'\ndiameter = 0.01"));
   s.count = 100;  // 100 spheres of 1 cm in a 3 cm cube cannot fit
   sim->modules.push_back(std::make_unique<InsertionModule>(s, 7));
   sim->dt = 1e-6;
@@ -94,9 +90,7 @@ TEST(Insertion, ImpossibleFillSaysHowManyFitted) {
 
 TEST(Insertion, PourFollowsItsRate) {
   auto sim = make_simulation({});
-  SizeParameters sp;
-  sp.diameter = 0.001;
-  InsertionSpec s = fill_spec(make_size("fixed", sp));
+  InsertionSpec s = fill_spec(make_size("distribution = 'fixed'\ndiameter = 0.001"));
   s.pour = true;
   s.rate = 20000;  // 1/s
   s.start = 0.001;
@@ -116,22 +110,20 @@ TEST(SizeDistribution, LognormalMedianAndNormalMean) {
   // 20000 draws: the sample median of a lognormal is within ~1 % of its median (SE of the median
   // of ln d is 1.25 sigma / sqrt(n) = 0.0035 here); the truncated-normal mean within 3 SE.
   Rng rng(1);
-  SizeParameters lp;
-  lp.median = 0.002;
-  lp.sigma = 0.4;
-  lp.min = 1e-6;
-  lp.max = 1.0;
-  auto ln = make_size("lognormal", lp);
+  auto ln = make_size(R"(distribution = "lognormal"
+                         median = 0.002
+                         sigma = 0.4
+                         min = 1e-6
+                         max = 1.0)");
   std::vector<double> d(20000);
   for (auto& x : d) x = ln->sample(rng);
   std::nth_element(d.begin(), d.begin() + 10000, d.end());
   EXPECT_NEAR(d[10000] / 0.002, 1.0, 0.011);
-  SizeParameters np;
-  np.mean = 0.003;
-  np.sd = 0.0003;
-  np.min = 0.0015;
-  np.max = 0.0045;  // +-5 sd: truncation negligible
-  auto nd = make_size("normal", np);
+  auto nd = make_size(R"(distribution = "normal"
+                         mean = 0.003
+                         sd = 0.0003
+                         min = 0.0015
+                         max = 0.0045)");  // +-5 sd: truncation negligible
   double s = 0;
   for (int k = 0; k < 20000; ++k) s += nd->sample(rng);
   EXPECT_NEAR(s / 20000, 0.003, 3 * 0.0003 / std::sqrt(20000.0));
@@ -141,10 +133,9 @@ TEST(SizeDistribution, MassBasedTableGivesMassFractions) {
   // Two sizes with equal mass fractions: the smaller one (half the diameter) must be drawn 8x as
   // often. 40000 draws: binomial SE of the number fraction 8/9 is 0.0016; 4 SE below.
   Rng rng(2);
-  SizeParameters tp;
-  tp.diameters = {0.001, 0.002};
-  tp.fractions = {0.5, 0.5};
-  auto t = make_size("table", tp);
+  auto t = make_size(R"(distribution = "table"
+                        diameters = [0.001, 0.002]
+                        fractions = [0.5, 0.5])");
   int small = 0;
   for (int k = 0; k < 40000; ++k) small += t->sample(rng) < 0.0015;
   EXPECT_NEAR(small / 40000.0, 8.0 / 9.0, 0.0064);

@@ -40,6 +40,7 @@ l=$(line_of '^restitution')
 expect "case.toml:$l: key 'interaction.restitution': value 1.5 out of range" 's/^restitution = 0.5/restitution = 1.5/'
 l=$(line_of '^open = ')
 expect "case.toml:$l: key 'walls[0].open': unknown face \"top\"" 's/^open = \["+z"\]/open = ["top"]/'
+expect "key 'walls[0].angular_velocity': a box wall can translate but not rotate" 's/^open = \["+z"\]/open = ["+z"]\nangular_velocity = [0.0, 0.0, 1.0]/'
 expect "TOML syntax error" 's/^friction = 0.5/friction = = 0.5/'
 expect "key 'insert[0].file'" 's/^type = "fill"/type = "data_file"\nfile = 3/'
 expect "no-such.data: cannot open the data file" 's/^type = "fill"/type = "data_file"\nfile = "no-such.data"/'

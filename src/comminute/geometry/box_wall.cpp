@@ -1,4 +1,10 @@
+// Keys of [[walls]] type = "box": lo, hi (m, required, every component of hi above lo), open
+// (faces left open among "-x", "+x", "-y", "+y", "-z", "+z", default none).
 #include "comminute/geometry/box_wall.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
 
 namespace comminute {
 
@@ -58,4 +64,27 @@ void BoxWall::load(const Archive& a, const std::string& prefix) {
   kinematics.center = g.at(2);
 }
 
+namespace {
+
+std::array<bool, 6> read_open_faces(const CaseTable& t) {
+  std::array<bool, 6> open{};
+  if (!t.has("open")) return open;
+  const std::vector<std::string> faces = {"-x", "+x", "-y", "+y", "-z", "+z"};
+  for (const auto& f : t.strings("open")) {
+    auto it = std::find(faces.begin(), faces.end(), f);
+    if (it == faces.end())
+      t.fail("open", fmt::format("unknown face \"{}\": use -x, +x, -y, +y, -z, +z", f));
+    open[static_cast<std::size_t>(it - faces.begin())] = true;
+  }
+  return open;
+}
+
+const bool registered = WallRegistry::add("box", [](const CaseTable& t) {
+  const Vec3 lo = t.vec3("lo"), hi = t.vec3("hi");
+  for (int a = 0; a < 3; ++a)
+    if (!(hi[a] > lo[a])) t.fail("hi", "every component of hi must exceed lo");
+  return std::make_unique<BoxWall>(lo, hi, read_open_faces(t));
+});
+
+}  // namespace
 }  // namespace comminute

@@ -15,6 +15,7 @@ class BoxWall : public Wall {
                std::vector<WallContact>& out) const override;
   void advance(double dt) override;
   SurfaceMesh surface(double extent) const override;
+  bool can_rotate() const override { return false; }
   void save(Archive& a, const std::string& prefix) const override;
   void load(const Archive& a, const std::string& prefix) override;
 

@@ -1,3 +1,5 @@
+// Keys of [[walls]] type = "cylinder": center (m, required), axis (-, default [0, 0, 1]), radius
+// and length (m, required), side ("inside" or "outside", required), caps (bool, default false).
 #include "comminute/geometry/cylinder_wall.hpp"
 
 #include <algorithm>
@@ -5,6 +7,7 @@
 
 #include "comminute/core/units.hpp"
 #include "comminute/geometry/rigid_frame.hpp"
+#include "comminute/geometry/wall_keys.hpp"
 
 namespace comminute {
 
@@ -118,4 +121,14 @@ void CylinderWall::load(const Archive& a, const std::string& prefix) {
   load_rigid_frame(a, prefix, center_, axis_, kinematics);
 }
 
+namespace {
+
+const bool registered = WallRegistry::add("cylinder", [](const CaseTable& t) {
+  return std::make_unique<CylinderWall>(
+      t.vec3("center"), read_unit_vector(t, "axis", {0, 0, 1}),
+      t.number("radius", Limits::positive()), t.number("length", Limits::positive()),
+      t.choice("side", {"inside", "outside"}) == "inside", t.boolean("caps", false));
+});
+
+}  // namespace
 }  // namespace comminute

@@ -1,6 +1,8 @@
+// Keys of [[walls]] type = "plane": point (m, required), normal (-, default [0, 0, 1]).
 #include "comminute/geometry/plane_wall.hpp"
 
 #include "comminute/geometry/rigid_frame.hpp"
+#include "comminute/geometry/wall_keys.hpp"
 
 namespace comminute {
 
@@ -42,4 +44,11 @@ void PlaneWall::load(const Archive& a, const std::string& prefix) {
   load_rigid_frame(a, prefix, point_, normal_, kinematics);
 }
 
+namespace {
+
+const bool registered = WallRegistry::add("plane", [](const CaseTable& t) {
+  return std::make_unique<PlaneWall>(t.vec3("point"), read_unit_vector(t, "normal", {0, 0, 1}));
+});
+
+}  // namespace
 }  // namespace comminute

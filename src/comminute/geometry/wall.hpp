@@ -2,13 +2,17 @@
 // Walls behind one interface: infinite plane, box, finite cylinder (inside or outside); triangle
 // meshes later implement the same interface. A wall reports the contact features a sphere touches
 // (a box corner touches up to three faces), moves by its Kinematics, and accumulates the force and
-// torque the particles exert on it (outputs).
+// torque the particles exert on it (outputs). Each wall type is a plug-in: its factory in
+// WallRegistry takes the view of its [[walls]] table and reads the keys of its shape; the keys
+// common to all walls (name, material, motion) are read by the case builder.
 #include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "comminute/core/archive.hpp"
+#include "comminute/core/case_table.hpp"
+#include "comminute/core/registry.hpp"
 #include "comminute/core/vec3.hpp"
 
 namespace comminute {
@@ -51,6 +55,9 @@ class Wall {
   // True when the wall's surface moves (so particles near it must be re-found): translation, or
   // rotation that changes the shape's position (a cylinder turning about its own axis does not).
   virtual bool surface_moves() const { return norm2(kinematics.velocity) > 0; }
+  // False for a wall that can translate but not rotate (the case builder refuses an
+  // angular_velocity for it).
+  virtual bool can_rotate() const { return true; }
   // Checkpoint of the geometry state under names prefixed by `prefix`.
   virtual void save(Archive& a, const std::string& prefix) const = 0;
   virtual void load(const Archive& a, const std::string& prefix) = 0;
@@ -61,5 +68,7 @@ class Wall {
   Vec3 force;   // N, total force exerted by particles on the wall in the last step
   Vec3 torque;  // N m, about kinematics.center
 };
+
+using WallRegistry = Registry<Wall, const CaseTable&>;
 
 }  // namespace comminute

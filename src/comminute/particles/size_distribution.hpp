@@ -1,10 +1,11 @@
 #pragma once
 // Particle size distributions for insertion, chosen by name ([insert.size] distribution = ...).
-// All sizes are diameters in m; sample() returns one diameter.
-#include <memory>
+// Each distribution is a plug-in: its factory in SizeDistributionRegistry takes the view of the
+// [insert.size] table and the model reads its own keys. All sizes are diameters in m; sample()
+// returns one diameter.
 #include <string>
-#include <vector>
 
+#include "comminute/core/case_table.hpp"
 #include "comminute/core/registry.hpp"
 #include "comminute/core/rng.hpp"
 
@@ -20,17 +21,6 @@ class SizeDistribution {
   virtual double mean_volume() const = 0;  // m3, expected sphere volume of one draw
 };
 
-// Parameters read from the case file; which ones a distribution needs is its own business
-// (the case builder checks them per name).
-struct SizeParameters {
-  double diameter = 0;           // fixed
-  double min = 0, max = 0;       // uniform bounds; truncation of normal/lognormal (0 = none)
-  double mean = 0, sd = 0;       // normal
-  double median = 0, sigma = 0;  // lognormal: median diameter, sd of ln d
-  std::vector<double> diameters, fractions;  // table
-  bool mass_fractions = true;                // table fractions by mass (else by number)
-};
-
-using SizeDistributionRegistry = Registry<SizeDistribution, const SizeParameters&>;
+using SizeDistributionRegistry = Registry<SizeDistribution, const CaseTable&>;
 
 }  // namespace comminute

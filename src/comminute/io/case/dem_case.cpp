@@ -103,40 +103,10 @@ Region read_region(const CaseTable& t) {
   return g;
 }
 
+// [insert.size]: the distribution by name; it reads its own keys.
 std::shared_ptr<const SizeDistribution> read_size(const CaseTable& t) {
-  SizeParameters p;
-  const std::string kind = t.choice("distribution", SizeDistributionRegistry::names());
-  if (kind == "fixed") {
-    p.diameter = t.number("diameter", kPositive);
-  } else if (kind == "uniform") {
-    p.min = t.number("min", kPositive);
-    p.max = t.number("max", kPositive);
-  } else if (kind == "normal" || kind == "lognormal") {
-    if (kind == "normal") {
-      p.mean = t.number("mean", kPositive);
-      p.sd = t.number("sd", kPositive);
-    } else {
-      p.median = t.number("median", kPositive);
-      p.sigma = t.number("sigma", kPositive);
-    }
-    p.min = t.number("min", kPositive);
-    p.max = t.number("max", kPositive);
-  } else {
-    p.diameters = t.numbers("diameters", kPositive);
-    p.fractions = t.numbers("fractions", Limits::non_negative());
-    p.mass_fractions = t.choice("basis", {"mass", "number"}, "mass") == "mass";
-    if (p.diameters.empty()) t.fail("diameters", "the table is empty");
-    if (p.fractions.size() != p.diameters.size())
-      t.fail("fractions", fmt::format("has {} entries but diameters has {}", p.fractions.size(),
-                                      p.diameters.size()));
-    double sum = 0;
-    for (double f : p.fractions) sum += f;
-    if (std::abs(sum - 1.0) > 1e-6)
-      t.fail("fractions", fmt::format("fractions sum to {}, not 1", sum));
-  }
-  if ((kind == "uniform" || kind == "normal" || kind == "lognormal") && !(p.max > p.min))
-    t.fail("max", fmt::format("max ({}) must exceed min ({})", p.max, p.min));
-  return SizeDistributionRegistry::create(kind, p);
+  return SizeDistributionRegistry::create(
+      t.choice("distribution", SizeDistributionRegistry::names()), t);
 }
 
 // The smallest particle an insertion can create, and its material (for the time step).

@@ -8,18 +8,18 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include "comminute/breakage/criteria/fracture_energy.hpp"
 #include "comminute/core/atomic_file.hpp"
 #include "comminute/core/error.hpp"
 #include "comminute/core/parallel.hpp"
 #include "comminute/core/units.hpp"
 #include "comminute/engine/simulation.hpp"
+#include "comminute/fracture/energy_share.hpp"
 
 namespace comminute::breakage {
 
-T10Parameters MaterialBreakage::default_t10() {
+fracture::T10Parameters MaterialBreakage::default_t10() {
   // Illustrative t_n family (a fit to a typical t-family chart; not published values).
-  T10Parameters p;
+  fracture::T10Parameters p;
   p.alpha = {0.975, 1.062, 0.918, 0.942, 0.929};
   p.beta = {2.667, 1.955, 0.393, 0.249, 0.183};
   return p;
@@ -68,9 +68,9 @@ void BreakageModule::configure(Simulation& sim) {
     for (std::size_t b = 0; b < n_materials_; ++b) {
       const Material& ma = sim.materials.material(static_cast<std::uint16_t>(a));
       const Material& mb = sim.materials.material(static_cast<std::uint16_t>(b));
-      share_[a * n_materials_ + b] =
-          energy_share(plane_strain_modulus(ma.youngs_modulus, ma.poisson_ratio),
-                       plane_strain_modulus(mb.youngs_modulus, mb.poisson_ratio));
+      share_[a * n_materials_ + b] = fracture::energy_share(
+          fracture::plane_strain_modulus(ma.youngs_modulus, ma.poisson_ratio),
+          fracture::plane_strain_modulus(mb.youngs_modulus, mb.poisson_ratio));
     }
   fines_mass_.resize(n_materials_, 0.0);
   pending_ = 0;
@@ -417,7 +417,7 @@ void BreakageModule::replace(Simulation& sim, std::size_t parent,
   const double d = 2 * r_parent;
   const double mass = p.mass[parent];
   const double density = mass / units::sphere_volume(r_parent);
-  // Progeny sizes (seed 002 eq. 16-18).
+  // Progeny sizes (docs/models.md eq. P1-P4).
   double e50b = mat.criterion->median_fracture_energy(d);
   if (e50b <= 0) e50b = mat.reference_energy;
   rec.t10 = mat.progeny.t10(rec.specific_energy, e50b);

@@ -12,7 +12,7 @@
 #include <memory>
 #include <string>
 
-#include "comminute/breakage/criteria/parameter_source.hpp"
+#include "comminute/core/case_table.hpp"
 #include "comminute/core/registry.hpp"
 #include "comminute/core/rng.hpp"
 #include "comminute/particles/material.hpp"
@@ -56,6 +56,8 @@ class BreakageCriterion {
   virtual double median_fracture_energy(double /*d*/) const { return -1.0; }
 };
 
-using CriterionRegistry = Registry<BreakageCriterion, const ParameterSource&, const Material&>;
+// A criterion's factory reads its own keys from the material's [materials.<m>.breakage] table;
+// the material gives the elastic constants of the energy partition.
+using CriterionRegistry = Registry<BreakageCriterion, const CaseTable&, const Material&>;
 
 }  // namespace comminute::breakage

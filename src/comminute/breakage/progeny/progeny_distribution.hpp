@@ -1,5 +1,5 @@
 #pragma once
-// The cumulative progeny size distribution of one breakage event (MODELS.md "Progeny"): mass %
+// The cumulative progeny size distribution of one breakage event (docs/models.md eq. P3): mass %
 // passing size x for a parent of diameter d, through the points (d/n, t_n) with t_1 = 100 and
 // t_10, interpolated monotonically (PCHIP, Fritsch & Carlson 1980) in (ln x, P), and extrapolated
 // below d/75 by the power law through (d/50, t_50) and (d/75, t_75).

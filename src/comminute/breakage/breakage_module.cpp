@@ -17,14 +17,6 @@
 
 namespace comminute::breakage {
 
-fracture::T10Parameters MaterialBreakage::default_t10() {
-  // Illustrative t_n family (a fit to a typical t-family chart; not published values).
-  fracture::T10Parameters p;
-  p.alpha = {0.975, 1.062, 0.918, 0.942, 0.929};
-  p.beta = {2.667, 1.955, 0.393, 0.249, 0.183};
-  return p;
-}
-
 BreakageModule::BreakageModule(std::vector<std::optional<MaterialBreakage>> per_material,
                                BreakageOptions opt)
     : materials_(std::move(per_material)), opt_(std::move(opt)) {}
@@ -420,8 +412,8 @@ void BreakageModule::replace(Simulation& sim, std::size_t parent,
   // Progeny sizes (docs/models.md eq. P1-P4).
   double e50b = mat.criterion->median_fracture_energy(d);
   if (e50b <= 0) e50b = mat.reference_energy;
-  rec.t10 = mat.progeny.t10(rec.specific_energy, e50b);
-  const ProgenyDistribution dist(d, rec.t10, mat.progeny.tn(rec.t10));
+  rec.t10 = mat.progeny->t10(rec.specific_energy, e50b);
+  const ProgenyDistribution dist = mat.progeny->distribution(d, rec.t10);
   const double min_size = std::max(mat.min_fragment_size, mat.min_fragment_ratio * d);
   const Progeny progeny = draw_progeny(dist, mass, density, min_size, mat.fines, strength_rng_);
   // Placement inside the parent.
@@ -619,7 +611,8 @@ void BreakageModule::write_model_curves() const {
     for (int k = 0; k <= 200; ++k) {
       const double e = 1.5 * e_max * k / 200.0;
       const double prob = energy_criterion ? mat.criterion->probability(d, {e, 0.0}) : -1.0;
-      o << fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g}\n", m, d, e, prob, mat.progeny.t10(e, e50b));
+      o << fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g}\n", m, d, e, prob,
+                       mat.progeny->t10(e, e50b));
     }
   }
   f.commit();

@@ -7,7 +7,6 @@
 #include "comminute/analysis/size_distribution_observer.hpp"
 #include "comminute/core/error.hpp"
 #include "comminute/fracture/rayleigh_time.hpp"
-#include "comminute/fracture/t10_model.hpp"
 
 namespace comminute::io {
 
@@ -30,7 +29,8 @@ breakage::MaterialBreakage read_material(const CaseTable& b, const Material& mat
            "set min_fragment_size or min_breakable_size (m) > 0: otherwise fragments shrink "
            "without limit and so does the time step");
   const CaseTable pr = b.table("progeny");
-  m.progeny = fracture::read_t10_model(pr);
+  m.progeny = breakage::ProgenyRegistry::create(
+      pr.choice("model", breakage::ProgenyRegistry::names(), "t10"), pr);
   if (m.criterion->median_fracture_energy(1.0) <= 0)
     m.reference_energy = pr.number("reference_energy", Limits::positive());
   else

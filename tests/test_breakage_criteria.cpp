@@ -1,5 +1,6 @@
-// Breakage criteria: fracture-energy distribution, size effect, energy partition, damage, and the
-// model-level tests 1 (breakage probability) and 4 (damage accumulation) of issue 3.
+// Breakage criteria: the model-level tests 1 (breakage probability) and 4 (damage accumulation)
+// of issue 3, the criteria registry. The shared physics (fracture-energy distribution, size
+// effect, energy partition, damage) is tested in test_fracture.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,17 +14,11 @@
 #include "comminute/breakage/criteria/vogel_peukert.hpp"
 #include "comminute/core/case_table.hpp"
 #include "comminute/core/error.hpp"
-#include "comminute/fracture/damage.hpp"
-#include "comminute/fracture/energy_share.hpp"
-#include "comminute/fracture/fracture_energy_distribution.hpp"
-#include "comminute/fracture/size_effect.hpp"
 
 using namespace comminute;
 using namespace comminute::breakage;
-using namespace comminute::fracture;
 
 namespace {
-const double inf = std::numeric_limits<double>::infinity();
 
 ParticleStore identical_particles(std::size_t n, BreakageCriterion& c, double d, Rng& rng) {
   ParticleStore p;
@@ -35,65 +30,6 @@ ParticleStore identical_particles(std::size_t n, BreakageCriterion& c, double d,
   return p;
 }
 }  // namespace
-
-TEST(FractureEnergy, CdfMatchesOracleTable) {
-  // Reference values computed independently (docs/models.md eq. F1), sigma = 0.8, E in units of
-  // E50 (printed to 6 digits).
-  const double e[] = {0.10, 0.25, 0.50, 1.00, 2.00, 4.00};
-  const double p5[] = {0.002166, 0.047583, 0.231251, 0.609851, 0.933834, 0.999910};
-  const double p10[] = {0.002081, 0.044451, 0.211185, 0.552389, 0.873971, 0.991140};
-  const double pinf[] = {0.002000, 0.041560, 0.193126, 0.500000, 0.806874, 0.958440};
-  FractureEnergyDistribution d5(1.0, 0.8, 5.0), d10(1.0, 0.8, 10.0), dinf(1.0, 0.8, inf);
-  for (int k = 0; k < 6; ++k) {
-    EXPECT_NEAR(d5.cdf(e[k]), p5[k], 1e-6);
-    EXPECT_NEAR(d10.cdf(e[k]), p10[k], 1e-6);
-    EXPECT_NEAR(dinf.cdf(e[k]), pinf[k], 1e-6);
-  }
-}
-
-TEST(FractureEnergy, QuantileInvertsCdfAndMedianIsReported) {
-  FractureEnergyDistribution d(200.0, 0.7, 5.0);
-  for (double u : {1e-6, 0.01, 0.3, 0.5, 0.77, 0.999999})
-    EXPECT_NEAR(d.cdf(d.quantile(u)), u, 1e-12);
-  // The unstarred form: the median is E50 Emax/(Emax + E50) = 200*1000/1200 (docs/models.md).
-  EXPECT_NEAR(d.median(), 200.0 * 1000.0 / 1200.0, 1e-9);
-  EXPECT_LT(d.quantile(0.999999), d.emax());
-}
-
-TEST(FractureEnergy, SizeEffectOracle) {
-  // Hand-computed eq. F3: E_inf = 100 J/kg, d0 = 10 mm, phi = 1.
-  SizeEffect s{100.0, 0.010, 1.0, 1.0};
-  const double d[] = {1, 2, 5, 10, 20, 50, 100};
-  const double e50[] = {1100, 600, 300, 200, 150, 120, 110};
-  for (int k = 0; k < 7; ++k) EXPECT_NEAR(s.e50(d[k] * 1e-3), e50[k], 1e-9);
-}
-
-TEST(FractureEnergy, EnergyShareOracle) {
-  // Hand-computed eq. F4-F5: a 70 GPa and a 30 GPa ore against steel, and two equal bodies.
-  const double ks = plane_strain_modulus(210e9, 0.30);
-  EXPECT_NEAR(energy_share(plane_strain_modulus(70e9, 0.25), ks), 0.755541, 1e-6);
-  EXPECT_NEAR(energy_share(plane_strain_modulus(30e9, 0.25), ks), 0.878220, 1e-6);
-  EXPECT_DOUBLE_EQ(energy_share(plane_strain_modulus(70e9, 0.25), plane_strain_modulus(70e9, 0.25)),
-                   0.5);
-}
-
-TEST(Damage, CheckValuesFromModels) {
-  // Check values of eq. D1 (docs/models.md "Damage"), 6 digits.
-  EXPECT_NEAR(tavares_king_damage(2, 0.5), 0.358610, 1e-6);
-  EXPECT_NEAR(tavares_king_damage(3, 0.3), 0.122009, 1e-6);
-  EXPECT_NEAR(tavares_king_damage(5, 0.9), 0.531877, 1e-6);
-  EXPECT_NEAR(tavares_king_damage(7, 0.99), 0.805857, 1e-6);
-  EXPECT_EQ(tavares_king_damage(4, 0.0), 0.0);
-  EXPECT_THROW(tavares_king_damage(4, 1.0), Error);
-}
-
-TEST(Damage, RootSatisfiesTheEquation) {
-  for (double g : {1.0, 2.5, 6.0})
-    for (double r : {0.05, 0.5, 0.95}) {
-      const double d = tavares_king_damage(g, r);
-      EXPECT_NEAR(d, std::pow(2 * g / (2 * g - 5 * d + 5) * r, 2 * g / 5), 1e-12);
-    }
-}
 
 // Issue 3, test 1: 1000 identical particles, each loaded once at E: the broken fraction lies in
 // the binomial 3-sigma band around the model P(E), at three energies.

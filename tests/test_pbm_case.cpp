@@ -111,15 +111,17 @@ kumar_correction = false
 
 TEST(PbmCase, RenamedKeysNameTheirNewKey) {
   const std::string head = R"(
-[grid]
-spacing = "geometric"
-top = 1e-3
-classes = 5
-[initial]
-kind = "monodisperse"
-size = 9e-4
 [solver]
 times = [1.0]
+[initial]
+sigma = 0.3
+median = 5e-4
+kind = "lognormal"
+[grid]
+classes = 4
+max = 1e-3
+min = 1e-4
+spacing = "logarithmic"
 [rate]
 model = "power_law"
 variable = "size"

@@ -1,18 +1,16 @@
-// UFRJ mechanistic mill model: the damage law's check values (Tavares & King 2002; docs/models.md
-// eq. D1), the reduction of its breakage rate to the energy-spectrum skeleton (docs/models.md
+// UFRJ mechanistic mill model (the damage law it uses is tested in test_fracture.cpp): the
+// reduction of its breakage rate to the energy-spectrum skeleton (docs/models.md
 // eq. S5 with eq. U1-U2), mass conservation and the weakening of the fracture-energy distribution
 // by damage.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "comminute/fracture/damage.hpp"
 #include "comminute/pbm/integrator.hpp"
 #include "comminute/pbm/solve.hpp"
 #include "comminute/pbm/ufrj_mill.hpp"
 
 using namespace comminute::pbm;
-using comminute::fracture::tavares_king_damage;
 
 namespace {
 const double kv = 0.5235987755982988;
@@ -33,16 +31,6 @@ UfrjParameters params(double gamma, std::size_t bins) {
   return p;
 }
 }  // namespace
-
-TEST(Damage, TavaresKingCheckValues) {
-  // Check values of eq. D1, 6 decimals quoted: tolerance half a unit in the last place.
-  EXPECT_NEAR(tavares_king_damage(2, 0.5), 0.358610, 0.5e-6);
-  EXPECT_NEAR(tavares_king_damage(3, 0.3), 0.122009, 0.5e-6);
-  EXPECT_NEAR(tavares_king_damage(5, 0.9), 0.531877, 0.5e-6);
-  EXPECT_NEAR(tavares_king_damage(7, 0.99), 0.805857, 0.5e-6);
-  EXPECT_EQ(tavares_king_damage(5, 0.0), 0.0);
-  EXPECT_LT(tavares_king_damage(5, 1e-3), 1e-5);  // D → 0 as E_k/E → 0 (oracle iv)
-}
 
 TEST(UfrjMill, VirginRateIsTheSkeletonWithTheFractureEnergyDistribution) {
   // S_i = Σ_k (λ_k m*_i/H) F_i(η E_k/m*_i) with the exact F_i; the model resolves F in bins of

@@ -7,8 +7,7 @@ namespace comminute::pbm {
 
 namespace {
 std::unique_ptr<SelectionFunction> make(const CaseTable& t, const ModelContext&) {
-  return read_energy_spectrum_rate(
-      t, std::make_unique<VogelPeukertProbability>(fracture::read_vogel_peukert(t), true));
+  return read_vogel_peukert_rate(t, /*linearised=*/true);
 }
 const bool registered = SelectionFunctionRegistry::add("capece", &make);
 }  // namespace

@@ -36,4 +36,9 @@ std::unique_ptr<SelectionFunction> read_energy_spectrum_rate(
       t.number("energy_share", {0, 1, true, false}, 1.0), std::move(probability));
 }
 
+std::unique_ptr<SelectionFunction> read_vogel_peukert_rate(const CaseTable& t, bool linearised) {
+  return read_energy_spectrum_rate(
+      t, std::make_unique<VogelPeukertProbability>(fracture::read_vogel_peukert(t), linearised));
+}
+
 }  // namespace comminute::pbm

@@ -69,5 +69,7 @@ class EnergySpectrumRate : public SelectionFunction {
 // The skeleton's keys (spectrum_file, holdup, captured_mass, energy_share) with the model's P.
 std::unique_ptr<SelectionFunction> read_energy_spectrum_rate(
     const CaseTable& t, std::unique_ptr<BreakageProbability> probability);
+// The skeleton with the Vogel–Peukert P (keys f_mat, threshold_product), linearised or not.
+std::unique_ptr<SelectionFunction> read_vogel_peukert_rate(const CaseTable& t, bool linearised);
 
 }  // namespace comminute::pbm

@@ -7,8 +7,7 @@ namespace comminute::pbm {
 
 namespace {
 std::unique_ptr<SelectionFunction> make(const CaseTable& t, const ModelContext&) {
-  return read_energy_spectrum_rate(
-      t, std::make_unique<VogelPeukertProbability>(fracture::read_vogel_peukert(t), false));
+  return read_vogel_peukert_rate(t, /*linearised=*/false);
 }
 const bool registered = SelectionFunctionRegistry::add("tuzcu_rajamani", &make);
 }  // namespace

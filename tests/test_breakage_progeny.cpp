@@ -5,9 +5,9 @@
 #include <boost/math/special_functions/beta.hpp>
 #include <cmath>
 
-#include "comminute/breakage/progeny/progeny_distribution.hpp"
 #include "comminute/breakage/progeny/progeny_sizes.hpp"
 #include "comminute/core/units.hpp"
+#include "comminute/fracture/progeny_distribution.hpp"
 #include "comminute/fracture/t10_model.hpp"
 
 using namespace comminute;

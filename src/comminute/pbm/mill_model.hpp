@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "comminute/pbm/collision_spectrum.hpp"
-#include "comminute/pbm/cumulative_table.hpp"
 #include "comminute/pbm/model_context.hpp"
 #include "comminute/pbm/ode.hpp"
+#include "comminute/pbm/progeny_fractions.hpp"
 
 namespace comminute::pbm {
 
@@ -23,7 +23,7 @@ class MillModel : public OdeSystem {
   // Breakage rate of virgin material per class (1/s).
   virtual std::vector<double> virgin_rates() const = 0;
   // Progeny (cumulative mass passing against d/D) of class i stressed by energy class k.
-  virtual CumulativeTable progeny(std::size_t i, std::size_t k) const = 0;
+  virtual ProgenyFractions progeny(std::size_t i, std::size_t k) const = 0;
   virtual const CollisionSpectrum& spectrum() const = 0;
 };
 

@@ -1,31 +1,11 @@
 #include "comminute/pbm/t10_breakage_function.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <memory>
-#include <vector>
 
 #include "comminute/fracture/size_effect.hpp"
 
 namespace comminute::pbm {
-
-// Points (1/n, t_n) of docs/models.md eq. P2 plus (1/10, t10) and (1, 100 %).
-CumulativeTable t10_progeny(const fracture::T10Model& model, double t10) {
-  const auto tn = model.tn(t10);
-  std::vector<std::pair<double, double>> pts;
-  for (std::size_t k = 0; k < tn.size(); ++k)
-    pts.emplace_back(1.0 / fracture::tn_sizes[k], tn[k] / 100.0);
-  pts.emplace_back(0.1, t10 / 100.0);
-  pts.emplace_back(1.0, 1.0);
-  std::sort(pts.begin(), pts.end());
-  std::vector<double> r, p;
-  for (const auto& [s, v] : pts) {
-    r.push_back(s);
-    // keep the table monotone if a user family crosses at t10
-    p.push_back(p.empty() ? v : std::max(v, p.back()));
-  }
-  return CumulativeTable(std::move(r), std::move(p));
-}
 
 T10BreakageFunction::T10BreakageFunction(fracture::T10Model model, double specific_energy,
                                          std::function<double(double)> e50, double shape_factor)

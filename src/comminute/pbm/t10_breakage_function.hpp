@@ -2,20 +2,15 @@
 // The t10 breakage function (JKMRC t10 with the UFRJ incomplete-beta t_n family; docs/models.md
 // eq. B5): every parent is stressed at one mass-specific energy e, its progeny has
 //   t10 = A [1 - exp(-b' e / E50(D))]   and   t_n = 100 I_{t10/100}(alpha_n, beta_n)
-// (fracture::T10Model) and passes t_n % at d = D/n (t_1 = 100 %); see t10_progeny() for the
-// interpolation between those points.
+// (fracture::T10Model) and passes t_n % at d = D/n (t_1 = 100 %), interpolated as the DEM
+// progeny is (t10_progeny, docs/models.md eq. P3).
 #include <functional>
 
 #include "comminute/fracture/t10_model.hpp"
 #include "comminute/pbm/breakage_function.hpp"
-#include "comminute/pbm/cumulative_table.hpp"
+#include "comminute/pbm/progeny_fractions.hpp"
 
 namespace comminute::pbm {
-
-// Cumulative mass passing against d/D of the progeny at breakage index t10 (%): the points
-// (1/n, t_n/100) for n = 2, 4, 25, 50, 75 plus (1/10, t10/100) and (1, 1), made monotone (a
-// point below the next finer one is raised to it), interpolated by CumulativeTable.
-CumulativeTable t10_progeny(const fracture::T10Model& model, double t10);
 
 class T10BreakageFunction : public BreakageFunction {
  public:

@@ -56,7 +56,7 @@ UfrjMill::UfrjMill(const SizeGrid& grid, double density, UfrjParameters p)
         s.w_lo.push_back(1 - (c - static_cast<double>(b)));
       }
       // Progeny at this energy: t10-based cumulative, lumped by mass into classes 0..i.
-      const CumulativeTable tab = progeny(i, k);
+      const ProgenyFractions tab = progeny(i, k);
       double below = 0;
       for (std::size_t c = 0; c <= i; ++c) {
         const double upper = c == i ? 1.0 : tab.passing(std::cbrt(grid.volume_edge(c + 1) / y));
@@ -74,7 +74,7 @@ double UfrjMill::specific_energy(std::size_t i, std::size_t k) const {
   return p_.energy_share * p_.spectrum.energy[k] / mstar_[i];
 }
 
-CumulativeTable UfrjMill::progeny(std::size_t i, std::size_t k) const {
+ProgenyFractions UfrjMill::progeny(std::size_t i, std::size_t k) const {
   return t10_progeny(t10_, t10_.t10(specific_energy(i, k), e50_[i]));
 }
 

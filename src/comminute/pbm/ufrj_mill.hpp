@@ -56,7 +56,7 @@ class UfrjMill : public MillModel {
   double captured_mass(std::size_t i) const { return mstar_[i]; }
   // Specific energy e_ik (J/kg) and the t10 progeny of class i stressed by energy class k.
   double specific_energy(std::size_t i, std::size_t k) const;
-  CumulativeTable progeny(std::size_t i, std::size_t k) const override;
+  ProgenyFractions progeny(std::size_t i, std::size_t k) const override;
   const CollisionSpectrum& spectrum() const override { return p_.spectrum; }
 
  private:

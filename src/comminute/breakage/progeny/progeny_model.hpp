@@ -5,11 +5,13 @@
 #include <memory>
 #include <string>
 
-#include "comminute/breakage/progeny/progeny_distribution.hpp"
 #include "comminute/core/case_table.hpp"
 #include "comminute/core/registry.hpp"
+#include "comminute/fracture/progeny_distribution.hpp"
 
 namespace comminute::breakage {
+
+using fracture::ProgenyDistribution;  // the progeny curve of docs/models.md eq. P3
 
 class ProgenyModel {
  public:

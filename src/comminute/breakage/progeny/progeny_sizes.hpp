@@ -9,10 +9,12 @@
 // passes its mass on to the next finer class. Mass below the minimum fragment size is fines.
 #include <vector>
 
-#include "comminute/breakage/progeny/progeny_distribution.hpp"
 #include "comminute/core/rng.hpp"
+#include "comminute/fracture/progeny_distribution.hpp"
 
 namespace comminute::breakage {
+
+using fracture::ProgenyDistribution;
 
 enum class FinesRule {
   particles,  // fines become non-breakable particles of about the minimum size

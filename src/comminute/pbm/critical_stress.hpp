@@ -3,7 +3,7 @@
 //   power_law   sigma_crit = sigma0 (d/d_ref)^(-1/m)                 (docs/models.md eq. S3)
 //   sigma50     sigma50 = sigma_inf (1 + x0/(d - x_p))^phi, unbreakable (infinite strength) for
 //               d <= x_p                                             (docs/models.md eq. S4)
-// (Dosta et al., carbon-black fragmentation in a mixer; see docs/models.md).
+// (a carbon-black fragmentation study in a mixer; see docs/models.md).
 #include "comminute/core/case_table.hpp"
 #include "comminute/core/registry.hpp"
 

@@ -78,6 +78,7 @@ ProgenyFractions UfrjMill::progeny(std::size_t i, std::size_t k) const {
   return t10_progeny(t10_, t10_.t10(specific_energy(i, k), e50_[i]));
 }
 
+// docs/models.md eq. U3-U5: captured mass breaks (bins below e) or is damaged and moved down.
 void UfrjMill::derivative(double, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const {
   dydt.setZero(y.size());
   Eigen::VectorXd born = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n_));
@@ -134,6 +135,7 @@ Eigen::VectorXd UfrjMill::median_fracture_energy(const Eigen::VectorXd& state) c
   return med;
 }
 
+// docs/models.md eq. S5 with P = F_i of the virgin bins (eq. U1-U2, U5).
 std::vector<double> UfrjMill::virgin_rates() const {
   std::vector<double> s(n_, 0.0);
   for (std::size_t i = 1; i < n_; ++i)

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "comminute/breakage/criteria/breakage_criterion.hpp"
+#include "comminute/breakage/placement/placement_model.hpp"
 #include "comminute/breakage/progeny/progeny_model.hpp"
 #include "comminute/pbm/breakage_function.hpp"
 #include "comminute/pbm/critical_stress.hpp"
@@ -32,6 +33,7 @@ const ModelDocs kModelDocs[] = {
      "### `[materials.<name>.breakage]`"},
     {"breakage progeny", &breakage::ProgenyRegistry::names, "breakage.md",
      "### `[materials.<name>.breakage.progeny]`"},
+    {"breakage placement", &breakage::PlacementRegistry::names, "breakage.md", "### `[breakage]`"},
     {"pbm breakage function", &pbm::BreakageFunctionRegistry::names, "pbm.md", "### `[breakage]`"},
     {"pbm rate", &pbm::SelectionFunctionRegistry::names, "pbm.md", "### `[rate]`"},
     {"pbm strength", &pbm::CriticalStressRegistry::names, "pbm.md", "### `[rate]`"},

@@ -19,7 +19,10 @@ namespace comminute::breakage {
 
 BreakageModule::BreakageModule(std::vector<std::optional<MaterialBreakage>> per_material,
                                BreakageOptions opt)
-    : materials_(std::move(per_material)), opt_(std::move(opt)) {}
+    : materials_(std::move(per_material)), opt_(std::move(opt)) {
+  if (!opt_.placement_model)
+    opt_.placement_model = std::make_shared<InsideParentPlacement>(opt_.placement);
+}
 
 BreakageModule::~BreakageModule() {
   try {
@@ -435,7 +438,7 @@ void BreakageModule::replace(Simulation& sim, std::size_t parent,
   };
   const Sphere ps{p.x[parent], r_parent};
   const auto placed =
-      place_fragments(ps, radii, masses, neighbours, walls, opt_.placement, placement_rng_);
+      opt_.placement_model->place(ps, radii, masses, neighbours, walls, placement_rng_);
   std::vector<Vec3> xs;
   for (const auto& s : placed) xs.push_back(s.x);
   const double released = mat.release_fraction * rec.specific_energy * mass;

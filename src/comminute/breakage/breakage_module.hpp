@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "comminute/breakage/criteria/breakage_criterion.hpp"
-#include "comminute/breakage/placement/fragment_placement.hpp"
+#include "comminute/breakage/placement/placement_model.hpp"
 #include "comminute/breakage/progeny/progeny_sizes.hpp"
 #include "comminute/breakage/progeny/t10_progeny.hpp"
 #include "comminute/core/vec3.hpp"
@@ -45,7 +45,8 @@ struct MaterialBreakage {
 };
 
 struct BreakageOptions {
-  PlacementOptions placement;
+  PlacementOptions placement;  // of the default placement model when placement_model is empty
+  std::shared_ptr<const FragmentPlacement> placement_model;
   double growth_overlap_ratio = 0.001;  // largest overlap growth may create, fraction of the
                                         // smaller radius (each growth step pumps in U(eps))
   double growth_step = 0.005;    // largest radius increment per step, fraction of the final radius

@@ -62,8 +62,8 @@ breakage::BreakageModule* add_breakage(const CaseTable& root, DemCase& dem,
   analysis::SieveOptions sieves;
   double psd_interval = 0;
   if (g) {
-    opt.placement.overlap_ratio = g->number("overlap_ratio", Limits{0.0, 0.5, true, false}, 0.01);
-    opt.placement.attempts = static_cast<int>(g->integer("placement_attempts", 1, 10000, 30));
+    opt.placement_model = breakage::PlacementRegistry::create(
+        g->choice("placement", breakage::PlacementRegistry::names(), "inside_parent"), *g);
     opt.growth_step = g->number("growth_step", Limits{0.0, 1.0, true, false}, 0.005);
     opt.growth_overlap_ratio =
         g->number("growth_overlap_ratio", Limits{0.0, 0.5, false, false}, 0.001);

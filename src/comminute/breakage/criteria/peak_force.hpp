@@ -25,6 +25,7 @@ class PeakForce : public BreakageCriterion {
   double strength(const ParticleStore& p, std::size_t i, double d) const override;
   std::string strength_unit() const override { return "N"; }
   double probability(double d, const StressingEvent& e) const override;
+  bool energy_based() const override { return false; }
 
  protected:
   // Critical force of particle i before its random factor (N).

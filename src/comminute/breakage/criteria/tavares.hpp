@@ -27,6 +27,7 @@ class Tavares final : public BreakageCriterion {
   std::string strength_unit() const override { return "J/kg"; }
   double damage(const ParticleStore& p, std::size_t i) const override;
   double probability(double d, const StressingEvent& e) const override;
+  bool energy_based() const override { return true; }
   double median_fracture_energy(double d) const override { return p_.e50(d); }
   fracture::FractureEnergyDistribution distribution(double d) const { return p_.distribution(d); }
   const TavaresParameters& parameters() const { return p_; }

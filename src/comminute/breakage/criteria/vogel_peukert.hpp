@@ -23,6 +23,7 @@ class VogelPeukert final : public BreakageCriterion {
   double strength(const ParticleStore& p, std::size_t i, double d) const override;
   std::string strength_unit() const override { return "J/kg"; }
   double probability(double d, const StressingEvent& e) const override;
+  bool energy_based() const override { return true; }
   // P for an accumulated excess energy (J/kg) at diameter d.
   double probability_of_excess(double d, double excess) const;
   double threshold(double d) const { return p_.threshold(d); }  // W_min(x), J/kg

@@ -1,23 +1,24 @@
-// Breakage criteria: fracture-energy distribution, size effect, energy partition, damage, and the
-// model-level tests 1 (breakage probability) and 4 (damage accumulation) of issue 3.
+// Breakage criteria: the model-level tests 1 (breakage probability) and 4 (damage accumulation)
+// of issue 3, the criteria registry. The shared physics (fracture-energy distribution, size
+// effect, energy partition, damage) is tested in test_fracture.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <tuple>
 
-#include "breakage_test_params.hpp"
 #include "comminute/breakage/criteria/composition_peak_force.hpp"
-#include "comminute/breakage/criteria/damage.hpp"
-#include "comminute/breakage/criteria/fracture_energy.hpp"
 #include "comminute/breakage/criteria/peak_force.hpp"
 #include "comminute/breakage/criteria/tavares.hpp"
 #include "comminute/breakage/criteria/vogel_peukert.hpp"
+#include "comminute/core/case_table.hpp"
+#include "comminute/core/error.hpp"
 
 using namespace comminute;
 using namespace comminute::breakage;
 
 namespace {
-const double inf = std::numeric_limits<double>::infinity();
 
 ParticleStore identical_particles(std::size_t n, BreakageCriterion& c, double d, Rng& rng) {
   ParticleStore p;
@@ -29,64 +30,6 @@ ParticleStore identical_particles(std::size_t n, BreakageCriterion& c, double d,
   return p;
 }
 }  // namespace
-
-TEST(FractureEnergy, CdfMatchesOracleTable) {
-  // MODELS-breakage-notes.md §1.2 oracle [C], sigma = 0.8, E in units of E50 (printed to 6 digits).
-  const double e[] = {0.10, 0.25, 0.50, 1.00, 2.00, 4.00};
-  const double p5[] = {0.002166, 0.047583, 0.231251, 0.609851, 0.933834, 0.999910};
-  const double p10[] = {0.002081, 0.044451, 0.211185, 0.552389, 0.873971, 0.991140};
-  const double pinf[] = {0.002000, 0.041560, 0.193126, 0.500000, 0.806874, 0.958440};
-  FractureEnergyDistribution d5(1.0, 0.8, 5.0), d10(1.0, 0.8, 10.0), dinf(1.0, 0.8, inf);
-  for (int k = 0; k < 6; ++k) {
-    EXPECT_NEAR(d5.cdf(e[k]), p5[k], 1e-6);
-    EXPECT_NEAR(d10.cdf(e[k]), p10[k], 1e-6);
-    EXPECT_NEAR(dinf.cdf(e[k]), pinf[k], 1e-6);
-  }
-}
-
-TEST(FractureEnergy, QuantileInvertsCdfAndMedianIsReported) {
-  FractureEnergyDistribution d(200.0, 0.7, 5.0);
-  for (double u : {1e-6, 0.01, 0.3, 0.5, 0.77, 0.999999})
-    EXPECT_NEAR(d.cdf(d.quantile(u)), u, 1e-12);
-  // The seed's form: the median is E50 Emax/(Emax + E50) = 200*1000/1200 (MODELS.md).
-  EXPECT_NEAR(d.median(), 200.0 * 1000.0 / 1200.0, 1e-9);
-  EXPECT_LT(d.quantile(0.999999), d.emax());
-}
-
-TEST(FractureEnergy, SizeEffectOracle) {
-  // Notes §1.3 [C]: E_inf = 100 J/kg, d0 = 10 mm, phi = 1.
-  SizeEffect s{100.0, 0.010, 1.0, 1.0};
-  const double d[] = {1, 2, 5, 10, 20, 50, 100};
-  const double e50[] = {1100, 600, 300, 200, 150, 120, 110};
-  for (int k = 0; k < 7; ++k) EXPECT_NEAR(s.e50(d[k] * 1e-3), e50[k], 1e-9);
-}
-
-TEST(FractureEnergy, EnergyShareOracle) {
-  // Notes §1.4 [C] table.
-  const double ks = plane_strain_modulus(210e9, 0.30);
-  EXPECT_NEAR(energy_share(plane_strain_modulus(70e9, 0.25), ks), 0.755541, 1e-6);
-  EXPECT_NEAR(energy_share(plane_strain_modulus(30e9, 0.25), ks), 0.878220, 1e-6);
-  EXPECT_DOUBLE_EQ(energy_share(plane_strain_modulus(70e9, 0.25), plane_strain_modulus(70e9, 0.25)),
-                   0.5);
-}
-
-TEST(Damage, CheckValuesFromModels) {
-  // MODELS.md "Damage accumulation" check values (6 digits).
-  EXPECT_NEAR(tavares_king_damage(2, 0.5), 0.358610, 1e-6);
-  EXPECT_NEAR(tavares_king_damage(3, 0.3), 0.122009, 1e-6);
-  EXPECT_NEAR(tavares_king_damage(5, 0.9), 0.531877, 1e-6);
-  EXPECT_NEAR(tavares_king_damage(7, 0.99), 0.805857, 1e-6);
-  EXPECT_EQ(tavares_king_damage(4, 0.0), 0.0);
-  EXPECT_THROW(tavares_king_damage(4, 1.0), Error);
-}
-
-TEST(Damage, RootSatisfiesTheEquation) {
-  for (double g : {1.0, 2.5, 6.0})
-    for (double r : {0.05, 0.5, 0.95}) {
-      const double d = tavares_king_damage(g, r);
-      EXPECT_NEAR(d, std::pow(2 * g / (2 * g - 5 * d + 5) * r, 2 * g / 5), 1e-12);
-    }
-}
 
 // Issue 3, test 1: 1000 identical particles, each loaded once at E: the broken fraction lies in
 // the binomial 3-sigma band around the model P(E), at three energies.
@@ -113,7 +56,7 @@ TEST(BreakageProbability, TavaresThousandParticlesWithinBinomialBand) {
 TEST(BreakageProbability, VogelPeukertThousandParticlesWithinBinomialBand) {
   VogelPeukert c({3.6, 0.06});
   const double d = 0.002;
-  // Notes §5.3 oracle [C]: W = 50, 100, 200, 500 J/kg -> P = 0.1341, 0.3959, 0.7059, 0.9661.
+  // Hand-computed eq. C3: W = 50, 100, 200, 500 J/kg -> P = 0.1341, 0.3959, 0.7059, 0.9661.
   EXPECT_NEAR(c.probability(d, {50, 0}), 0.1341, 1e-4);
   EXPECT_NEAR(c.probability(d, {500, 0}), 0.9661, 1e-4);
   EXPECT_EQ(c.probability(d, {29, 0}), 0.0);
@@ -143,7 +86,8 @@ TEST(BreakageProbability, PeakForceRandomFactorWithinBinomialBand) {
 }
 
 TEST(PeakForce, CompositionWeightsTheCriticalForce) {
-  // Binary case (seed 000 eq. 3): F = F_CS (1 - C_t) + F_CS C_t f_rel,t with f_rel = (1, 4).
+  // Binary case (Cleary & Sinnott 2015; docs/models.md eq. C2): F = F_CS (1 - C_t) + F_CS C_t
+  // f_rel,t with f_rel = (1, 4).
   CompositionPeakForce c({1e6, 1.5, 2.0}, 0.0, {1.0, 4.0});
   ParticleStore p;
   c.attach(p);
@@ -207,9 +151,9 @@ TEST(DamageAccumulation, RepeatedImpactsFollowHandIteration) {
 }
 
 TEST(Criteria, RegistryBuildsEachByName) {
-  test_support::MapParameters s;
-  s.values = {{"e_inf", 100}, {"sigma", 0.8}, {"a", 1e6}, {"b", 1.5}, {"f_mat", 1.0}};
-  s.lists = {{"relative_strength", {1.0, 2.0}}};
+  const CaseFile good = CaseFile::parse(
+      "e_inf = 100\nsigma = 0.8\na = 1e6\nb = 1.5\nf_mat = 1.0\nrelative_strength = [1.0, 2.0]\n");
+  const CaseTable s = good.root();
   Material m{"rock", 2700, 70e9, 0.25};
   for (const char* n : {"tavares", "peak_force", "composition_peak_force", "vogel_peukert"}) {
     auto c = CriterionRegistry::create(n, s, m);
@@ -217,10 +161,29 @@ TEST(Criteria, RegistryBuildsEachByName) {
     EXPECT_EQ(c->name(), n);
   }
   EXPECT_FALSE(CriterionRegistry::create("nope", s, m));
-  test_support::MapParameters bad;
-  bad.values = {{"e_inf", -1}, {"sigma", 0.8}};
-  EXPECT_THROW(CriterionRegistry::create("tavares", bad, m), Error);
-  // Applied basis against steel: E50 carries the partition e = 0.755541 (70 GPa ore, notes §1.4).
+  const CaseFile bad = CaseFile::parse("e_inf = -1\nsigma = 0.8\n");
+  EXPECT_THROW(CriterionRegistry::create("tavares", bad.root(), m), Error);
+  // Applied basis against steel: E50 carries the partition e = 0.755541 (70 GPa ore, eq. F5).
   auto t = CriterionRegistry::create("tavares", s, m);
   EXPECT_NEAR(t->median_fracture_energy(1e9), 100 * 0.755541, 1e-4);
+}
+
+TEST(Criteria, RenamedKeysNameTheirNewKey) {
+  Material m{"rock", 2700, 70e9, 0.25};
+  for (const auto& [text, old_key, new_key] :
+       {std::tuple{"e50_inf = 100\nsigma = 0.8\n", "e50_inf", "e_inf"},
+        std::tuple{"e_inf = 100\nsigma = 0.8\nmax_ratio = 5\n", "max_ratio", "emax_ratio"},
+        std::tuple{"e_inf = 100\nsigma = 0.8\ngamma = 3\n", "gamma", "damage_gamma"}}) {
+    const CaseFile f = CaseFile::parse(text, "case.toml");
+    try {
+      CriterionRegistry::create("tavares", f.root(), m);
+      ADD_FAILURE() << old_key << " accepted";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(std::string("'") + old_key + "' was renamed: use '" + new_key + "'"),
+                std::string::npos)
+          << what;
+      EXPECT_NE(what.find("case.toml"), std::string::npos) << what;
+    }
+  }
 }

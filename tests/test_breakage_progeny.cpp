@@ -5,13 +5,14 @@
 #include <boost/math/special_functions/beta.hpp>
 #include <cmath>
 
-#include "comminute/breakage/progeny/progeny_distribution.hpp"
 #include "comminute/breakage/progeny/progeny_sizes.hpp"
-#include "comminute/breakage/progeny/t10_model.hpp"
 #include "comminute/core/units.hpp"
+#include "comminute/fracture/progeny_distribution.hpp"
+#include "comminute/fracture/t10_model.hpp"
 
 using namespace comminute;
 using namespace comminute::breakage;
+using namespace comminute::fracture;
 
 namespace {
 // Illustrative alpha_n, beta_n (a fit to a typical t-family curve, not published values).

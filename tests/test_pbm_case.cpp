@@ -4,6 +4,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <tuple>
 
 #include "comminute/core/error.hpp"
 #include "comminute/io/case/pbm_case.hpp"
@@ -104,5 +106,45 @@ kumar_correction = false
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "solver.kumar_correction");
+  }
+}
+
+TEST(PbmCase, RenamedKeysNameTheirNewKey) {
+  const std::string head = R"(
+[solver]
+times = [1.0]
+[initial]
+sigma = 0.3
+median = 5e-4
+kind = "lognormal"
+[grid]
+classes = 4
+max = 1e-3
+min = 1e-4
+spacing = "logarithmic"
+[rate]
+model = "power_law"
+variable = "size"
+k = 1.0
+alpha = 1.0
+[breakage]
+function = "t10"
+A = 50
+alpha = [1, 1, 1, 1, 1]
+beta = [1, 1, 1, 1, 1]
+energy = 100
+)";
+  for (const auto& [keys, old_key, new_key] :
+       {std::tuple{"b = 1\ne_inf = 100\n", "b", "b_prime"},
+        std::tuple{"b_prime = 1\ne50_inf = 100\n", "e50_inf", "e_inf"}}) {
+    const auto f = CaseFile::parse(head + keys, "renamed.toml");
+    try {
+      io::read_pbm_problem(f.root());
+      ADD_FAILURE() << old_key << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.key(), std::string("breakage.") + old_key);
+      EXPECT_NE(std::string(e.what()).find(std::string("use '") + new_key + "'"), std::string::npos)
+          << e.what();
+    }
   }
 }

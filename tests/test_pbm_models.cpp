@@ -120,14 +120,17 @@ TEST(AustinBreakageFunction, NormalisedAndNonNormalised) {
 }
 
 TEST(T10BreakageFunction, PassesT10AtOneTenthAndTnAtOneNth) {
-  TnFamily fam;
+  comminute::fracture::T10Parameters fam;
+  fam.a = 50;
+  fam.b_prime = 1.2;
   // Illustrative family (no published default set): fitted to a typical t10–tn chart shape
   // (t10 = 20 % → t2 70, t4 45, t25 9, t50 5, t75 3.5 %).
   fam.alpha = {0.86, 1.0, 0.90, 0.93, 0.93};
   fam.beta = {4.59, 2.70, 0.333, 0.192, 0.134};
-  const double t10 = t10_at_energy(50, 1.2, 1000, 2000);
+  const comminute::fracture::T10Model model(fam);
+  const double t10 = model.t10(1000, 2000);
   EXPECT_NEAR(t10, 50 * (1 - std::exp(-0.6)), 1e-12);
-  const auto tab = fam.progeny(t10);
+  const auto tab = t10_progeny(model, t10);
   EXPECT_NEAR(tab.passing(0.1), t10 / 100, 1e-14);
   EXPECT_NEAR(tab.passing(0.5), boost::math::ibeta(0.86, 4.59, t10 / 100), 1e-14);
   EXPECT_NEAR(tab.passing(1.0 / 75), boost::math::ibeta(0.93, 0.134, t10 / 100), 1e-14);
@@ -138,7 +141,7 @@ TEST(T10BreakageFunction, PassesT10AtOneTenthAndTnAtOneNth) {
     prev = p;
   }
   const T10BreakageFunction f(
-      {50, 1.2, 1000, fam}, [](double) { return 2000.0; }, kv);
+      model, 1000, [](double) { return 2000.0; }, kv);
   const double y = kv * 1e-9;
   EXPECT_NEAR(f.cumulative_mass(y / 1000, y), t10 / 100, 1e-14);  // d/D = 1/10
 }

@@ -8,25 +8,20 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include "comminute/breakage/criteria/fracture_energy.hpp"
 #include "comminute/core/error.hpp"
 #include "comminute/core/parallel.hpp"
 #include "comminute/core/units.hpp"
 #include "comminute/engine/simulation.hpp"
+#include "comminute/fracture/energy_share.hpp"
 
 namespace comminute::breakage {
 
-T10Parameters MaterialBreakage::default_t10() {
-  // Illustrative t_n family (a fit to a typical t-family chart; not published values).
-  T10Parameters p;
-  p.alpha = {0.975, 1.062, 0.918, 0.942, 0.929};
-  p.beta = {2.667, 1.955, 0.393, 0.249, 0.183};
-  return p;
-}
-
 BreakageModule::BreakageModule(std::vector<std::optional<MaterialBreakage>> per_material,
                                BreakageOptions opt)
-    : materials_(std::move(per_material)), opt_(std::move(opt)) {}
+    : materials_(std::move(per_material)), opt_(std::move(opt)) {
+  if (!opt_.placement_model)
+    opt_.placement_model = std::make_shared<InsideParentPlacement>(opt_.placement);
+}
 
 BreakageModule::~BreakageModule() = default;
 
@@ -62,9 +57,9 @@ void BreakageModule::configure(Simulation& sim) {
     for (std::size_t b = 0; b < n_materials_; ++b) {
       const Material& ma = sim.materials.material(static_cast<std::uint16_t>(a));
       const Material& mb = sim.materials.material(static_cast<std::uint16_t>(b));
-      share_[a * n_materials_ + b] =
-          energy_share(plane_strain_modulus(ma.youngs_modulus, ma.poisson_ratio),
-                       plane_strain_modulus(mb.youngs_modulus, mb.poisson_ratio));
+      share_[a * n_materials_ + b] = fracture::energy_share(
+          fracture::plane_strain_modulus(ma.youngs_modulus, ma.poisson_ratio),
+          fracture::plane_strain_modulus(mb.youngs_modulus, mb.poisson_ratio));
     }
   fines_mass_.resize(n_materials_, 0.0);
   pending_ = 0;
@@ -404,11 +399,11 @@ void BreakageModule::replace(Simulation& sim, std::size_t parent,
   const double d = 2 * r_parent;
   const double mass = p.mass[parent];
   const double density = mass / units::sphere_volume(r_parent);
-  // Progeny sizes (seed 002 eq. 16-18).
+  // Progeny sizes (docs/models.md eq. P1-P4).
   double e50b = mat.criterion->median_fracture_energy(d);
   if (e50b <= 0) e50b = mat.reference_energy;
-  rec.t10 = mat.progeny.t10(rec.specific_energy, e50b);
-  const ProgenyDistribution dist(d, rec.t10, mat.progeny.tn(rec.t10));
+  rec.t10 = mat.progeny->t10(rec.specific_energy, e50b);
+  const ProgenyDistribution dist = mat.progeny->distribution(d, rec.t10);
   const double min_size = std::max(mat.min_fragment_size, mat.min_fragment_ratio * d);
   const Progeny progeny = draw_progeny(dist, mass, density, min_size, mat.fines, strength_rng_);
   // Placement inside the parent.
@@ -430,7 +425,7 @@ void BreakageModule::replace(Simulation& sim, std::size_t parent,
   };
   const Sphere ps{p.x[parent], r_parent};
   const auto placed =
-      place_fragments(ps, radii, masses, neighbours, walls, opt_.placement, placement_rng_);
+      opt_.placement_model->place(ps, radii, masses, neighbours, walls, placement_rng_);
   std::vector<Vec3> xs;
   for (const auto& s : placed) xs.push_back(s.x);
   const double released = mat.release_fraction * rec.specific_energy * mass;

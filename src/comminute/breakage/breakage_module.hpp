@@ -24,9 +24,9 @@
 
 #include "comminute/breakage/breakage_series.hpp"
 #include "comminute/breakage/criteria/breakage_criterion.hpp"
-#include "comminute/breakage/placement/fragment_placement.hpp"
+#include "comminute/breakage/placement/placement_model.hpp"
 #include "comminute/breakage/progeny/progeny_sizes.hpp"
-#include "comminute/breakage/progeny/t10_model.hpp"
+#include "comminute/breakage/progeny/t10_progeny.hpp"
 #include "comminute/core/vec3.hpp"
 #include "comminute/engine/module.hpp"
 #include "comminute/engine/simulation.hpp"
@@ -36,18 +36,18 @@ namespace comminute::breakage {
 // Breakage settings of one material.
 struct MaterialBreakage {
   std::unique_ptr<BreakageCriterion> criterion;
-  T10Model progeny{default_t10()};
+  std::unique_ptr<ProgenyModel> progeny = std::make_unique<T10Progeny>(T10Progeny::illustrative());
   double reference_energy = -1;      // J/kg, E50b for t10 when the criterion has no median
   double min_breakable_size = 0;     // m, smaller particles never break
   double min_fragment_size = 0;      // m, smaller fragments become fines
   double min_fragment_ratio = 0.05;  // fragments below this fraction of the parent diameter: fines
   FinesRule fines = FinesRule::particles;
   double release_fraction = 0;  // eta: fraction of the absorbed energy given as radial speed
-  static T10Parameters default_t10();
 };
 
 struct BreakageOptions {
-  PlacementOptions placement;
+  PlacementOptions placement;  // of the default placement model when placement_model is empty
+  std::shared_ptr<const FragmentPlacement> placement_model;
   double growth_overlap_ratio = 0.001;  // largest overlap growth may create, fraction of the
                                         // smaller radius (each growth step pumps in U(eps))
   double growth_step = 0.005;    // largest radius increment per step, fraction of the final radius

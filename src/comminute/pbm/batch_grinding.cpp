@@ -32,7 +32,7 @@ BatchGrinding BatchGrinding::from_models(const SizeGrid& grid, const SelectionFu
   return BatchGrinding(std::move(s), std::move(b));
 }
 
-// Austin (1984): dw_i/dt = −S_i w_i + Σ_j b_ij S_j w_j.
+// Austin, Klimpel & Luckie (1984), docs/models.md eq. G1: dw_i/dt = −S_i w_i + Σ_j b_ij S_j w_j.
 LinearOde BatchGrinding::system() const {
   const auto n = static_cast<Eigen::Index>(s_.size());
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);

@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include "comminute/pbm/model_context.hpp"
+
 namespace comminute::pbm {
 
 class BreakageFunction {
@@ -25,5 +27,9 @@ class BreakageFunction {
   // The function that breaks a parent of volume y (itself, except for population splits).
   virtual const BreakageFunction& of_parent(double /*y*/) const { return *this; }
 };
+
+// [breakage] function = "<name>": each function's file registers its factory, which reads the
+// function's own keys from the table.
+using BreakageFunctionRegistry = Registry<BreakageFunction, const CaseTable&, const ModelContext&>;
 
 }  // namespace comminute::pbm

@@ -1,8 +1,12 @@
 #pragma once
-// Size-dependent strength of a particle (Pa) for the stress-based rate:
-//   power law   σ_crit = σ0 (d/d_ref)^(−1/m)
-//   σ50 model   σ50 = σ∞ (1 + x0/(d − x_p))^φ, unbreakable (infinite strength) for d ≤ x_p
-// (carbon-black mixer study, seed 003).
+// Size-dependent strength of a particle (Pa) for the stress-based rate ([rate] strength = ...):
+//   power_law   sigma_crit = sigma0 (d/d_ref)^(-1/m)                 (docs/models.md eq. S3)
+//   sigma50     sigma50 = sigma_inf (1 + x0/(d - x_p))^phi, unbreakable (infinite strength) for
+//               d <= x_p                                             (docs/models.md eq. S4)
+// (a carbon-black fragmentation study in a mixer; see docs/models.md).
+#include "comminute/core/case_table.hpp"
+#include "comminute/core/registry.hpp"
+
 namespace comminute::pbm {
 
 class CriticalStress {
@@ -10,6 +14,9 @@ class CriticalStress {
   virtual ~CriticalStress() = default;
   virtual double of_size(double d) const = 0;
 };
+
+// Each strength model's file registers its factory, which reads its keys from the [rate] table.
+using CriticalStressRegistry = Registry<CriticalStress, const CaseTable&>;
 
 class PowerLawStrength : public CriticalStress {
  public:

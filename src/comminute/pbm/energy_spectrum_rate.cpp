@@ -5,10 +5,9 @@
 
 namespace comminute::pbm {
 
-// Vogel & Peukert (2003): P = 1 − exp[−f_mat x k (W_m − W_m,min)], k = 1 impact.
+// Vogel & Peukert (2003), docs/models.md eq. C3 with k = 1 impact; eq. S6 when linearised.
 double VogelPeukertProbability::operator()(double energy, double size) const {
-  const double excess = std::max(0.0, energy - x_e_min_ / size);
-  const double a = f_mat_ * size * excess;
+  const double a = m_.exponent(size, energy - m_.threshold(size));
   return linearised_ ? std::min(1.0, a) : 1 - std::exp(-a);
 }
 
@@ -21,12 +20,25 @@ EnergySpectrumRate::EnergySpectrumRate(CollisionSpectrum spectrum, double holdup
       share_(energy_share),
       p_(std::move(probability)) {}
 
-// Notes §5: S_i = (1/H) Σ_k λ_k m*_i P_i(η E_k/m*_i).
+// docs/models.md eq. S5: S_i = (1/H) Σ_k λ_k m*_i P_i(η E_k/m*_i).
 double EnergySpectrumRate::rate(double size, double /*volume*/) const {
   double s = 0;
   for (std::size_t k = 0; k < spectrum_.energy.size(); ++k)
     s += spectrum_.frequency[k] * captured_ * (*p_)(share_ * spectrum_.energy[k] / captured_, size);
   return s / holdup_;
+}
+
+std::unique_ptr<SelectionFunction> read_energy_spectrum_rate(
+    const CaseTable& t, std::unique_ptr<BreakageProbability> probability) {
+  return std::make_unique<EnergySpectrumRate>(
+      read_collision_spectrum(t, "spectrum_file"), t.number("holdup", Limits::positive()),
+      t.number("captured_mass", Limits::positive()),
+      t.number("energy_share", {0, 1, true, false}, 1.0), std::move(probability));
+}
+
+std::unique_ptr<SelectionFunction> read_vogel_peukert_rate(const CaseTable& t, bool linearised) {
+  return read_energy_spectrum_rate(
+      t, std::make_unique<VogelPeukertProbability>(fracture::read_vogel_peukert(t), linearised));
 }
 
 }  // namespace comminute::pbm

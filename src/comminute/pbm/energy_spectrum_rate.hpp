@@ -1,21 +1,23 @@
 #pragma once
-// Breakage rates of a ball mill from its collision energy spectrum (MODELS-pbm-notes.md §5):
+// Breakage rates of a ball mill from its collision energy spectrum (docs/models.md eq. S5):
 //   S_i = (1/H) Σ_k λ_k · m*_i · P_i(e_ik),   e_ik = η E_k / m*_i
 // H the powder hold-up (kg), m*_i the powder mass stressed per collision (kg), η the share of the
 // collision energy the powder absorbs, P_i the fraction of stressed class-i material that breaks
-// at mass-specific energy e. The published models differ in m* and P; the forms coded here:
-//   capece          P = min(1, f_mat·x·(e − E_min(x))⁺), E_min(x) = (x·E_min)/x — Vogel–Peukert
-//                   linearised for one impact (Capece, Bilgili & Davé 2014)
+// at mass-specific energy e. The published models differ in m* and P; each is its own file:
+//   capece          P = min(1, f_mat·x·(e − E_min(x))⁺) — Vogel–Peukert linearised for one
+//                   impact (Capece, Bilgili & Davé 2014)                      (capece_rate.cpp)
 //   tuzcu_rajamani  P = 1 − exp(−f_mat·x·(e − E_min(x))⁺) — bed breakage probability in
 //                   Vogel–Peukert form standing for the UFLC bed-impact data of Tuzcu & Rajamani
-//                   (2011) [structure per the notes; the form is this code's choice]
+//                   (2011) [the form is this code's choice]           (tuzcu_rajamani_rate.cpp)
 //   datta_rajamani  P = F_i(e), the single-particle fracture-energy distribution standing for the
 //                   drop-weight data of Datta & Rajamani (2002) [same caveat]
+//                                                                     (datta_rajamani_rate.cpp)
 // m* is a constant bed mass per collision for all three.
 #include <memory>
 
+#include "comminute/fracture/fracture_energy_model.hpp"
+#include "comminute/fracture/vogel_peukert.hpp"
 #include "comminute/pbm/collision_spectrum.hpp"
-#include "comminute/pbm/fracture_energy.hpp"
 #include "comminute/pbm/selection_function.hpp"
 
 namespace comminute::pbm {
@@ -27,26 +29,29 @@ class BreakageProbability {
   virtual double operator()(double energy, double size) const = 0;
 };
 
-// Vogel & Peukert (Powder Technol. 129 (2003) 101): P = 1 − exp[−f_mat x (e − xE_min/x)⁺];
+// Vogel & Peukert (docs/models.md eq. C3) for one impact: P = 1 − exp[−f_mat x (e − xE_min/x)⁺];
 // `linearised` gives Capece's single-impact form min(1, f_mat x (e − xE_min/x)⁺).
 class VogelPeukertProbability : public BreakageProbability {
  public:
-  VogelPeukertProbability(double f_mat, double x_e_min, bool linearised)
-      : f_mat_(f_mat), x_e_min_(x_e_min), linearised_(linearised) {}
+  // f_mat (kg/(J·m)), threshold_product x·E_min (J·m/kg).
+  VogelPeukertProbability(double f_mat, double threshold_product, bool linearised)
+      : m_{f_mat, threshold_product}, linearised_(linearised) {}
+  VogelPeukertProbability(const fracture::VogelPeukertModel& m, bool linearised)
+      : m_(m), linearised_(linearised) {}
   double operator()(double energy, double size) const override;
 
  private:
-  double f_mat_, x_e_min_;  // kg/(J·m), J·m/kg
+  fracture::VogelPeukertModel m_;
   bool linearised_;
 };
 
 class FractureEnergyProbability : public BreakageProbability {
  public:
-  explicit FractureEnergyProbability(FractureEnergyModel m) : m_(m) {}
+  explicit FractureEnergyProbability(fracture::FractureEnergyModel m) : m_(m) {}
   double operator()(double energy, double size) const override { return m_.cdf(energy, size); }
 
  private:
-  FractureEnergyModel m_;
+  fracture::FractureEnergyModel m_;
 };
 
 class EnergySpectrumRate : public SelectionFunction {
@@ -60,5 +65,11 @@ class EnergySpectrumRate : public SelectionFunction {
   double holdup_, captured_, share_;
   std::unique_ptr<BreakageProbability> p_;
 };
+
+// The skeleton's keys (spectrum_file, holdup, captured_mass, energy_share) with the model's P.
+std::unique_ptr<SelectionFunction> read_energy_spectrum_rate(
+    const CaseTable& t, std::unique_ptr<BreakageProbability> probability);
+// The skeleton with the Vogel–Peukert P (keys f_mat, threshold_product), linearised or not.
+std::unique_ptr<SelectionFunction> read_vogel_peukert_rate(const CaseTable& t, bool linearised);
 
 }  // namespace comminute::pbm

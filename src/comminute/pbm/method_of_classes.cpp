@@ -4,6 +4,8 @@
 
 namespace comminute::pbm {
 
+// Method of classes with the number- and mass-preserving weights of Kumar et al.
+// (docs/models.md eq. B1).
 MethodOfClasses::MethodOfClasses(const SizeGrid& grid, const SelectionFunction& rate,
                                  const BreakageFunction& function, bool kumar_correction) {
   const std::size_t n = grid.classes();

@@ -34,7 +34,7 @@ Solution solve(const Problem& p) {
     s.rates = moc.rates();
     for (std::size_t i = 0; i < p.grid.classes(); ++i) s.rate_sizes.push_back(p.grid.pivot_size(i));
     s.number = solve(moc.system(), *integrator, p.initial_number, p.times);
-  } else if (p.method == Method::ufrj) {
+  } else if (p.method == Method::mill) {
     s.rates = p.mill->virgin_rates();
     for (std::size_t i = 0; i < p.grid.classes(); ++i) s.rate_sizes.push_back(p.grid.pivot_size(i));
     const auto states =

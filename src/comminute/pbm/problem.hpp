@@ -8,13 +8,13 @@
 
 #include "comminute/pbm/breakage_function.hpp"
 #include "comminute/pbm/integrator.hpp"
+#include "comminute/pbm/mill_model.hpp"
 #include "comminute/pbm/selection_function.hpp"
 #include "comminute/pbm/size_grid.hpp"
-#include "comminute/pbm/ufrj_mill.hpp"
 
 namespace comminute::pbm {
 
-enum class Method { classes, batch_grinding, ufrj };
+enum class Method { classes, batch_grinding, mill };
 enum class Scheme { rk4, adaptive };
 
 struct TimeIntegration {
@@ -30,8 +30,8 @@ struct Problem {
   Eigen::VectorXd initial_number;  // particles per class
   std::shared_ptr<const SelectionFunction> rate;
   std::shared_ptr<const BreakageFunction> function;  // classes, batch_grinding
-  std::shared_ptr<const UfrjMill> mill;              // ufrj
-  CollisionSpectrum mill_spectrum;                   // ufrj, for reports
+  std::shared_ptr<const MillModel> mill;             // mill (e.g. "ufrj")
+  CollisionSpectrum mill_spectrum;                   // mill, for reports
   Method method = Method::classes;
   bool kumar_correction = true;
   TimeIntegration integration{};

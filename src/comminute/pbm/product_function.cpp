@@ -22,7 +22,7 @@ ProductFunction::ProductFunction(double q, double nu) : q_(q), nu_(nu), r_(q * (
   if (!(q > 0 && nu > 1)) throw Error("ProductFunction: need q > 0 and nu > 1");
 }
 
-// Diemer & Olson (2002), generalised Beta θ(z).
+// Diemer & Olson (2002), generalised Beta θ(z): docs/models.md eq. B2.
 double ProductFunction::theta(double z) const {
   if (z <= 0 || z >= 1) return 0.0;
   return nu_ * std::pow(z, q_ - 1) * std::pow(1 - z, r_ - 1) / bm::beta(q_, r_);
@@ -51,5 +51,15 @@ double ProductFunction::cumulative_mass(double v, double y) const {
 std::optional<double> ProductFunction::cumulative_number(double v, double y) const {
   return nu_ * bm::ibeta(q_, r_, ratio(v, y));
 }
+
+namespace {
+// Keys q (> 0) and nu (>= 2: at least binary breakage).
+std::unique_ptr<BreakageFunction> make(const CaseTable& t, const ModelContext&) {
+  const double q = t.number("q", Limits::positive());
+  const double nu = t.number("nu", Limits::at_least(2.0));
+  return std::make_unique<ProductFunction>(q, nu);
+}
+const bool registered = BreakageFunctionRegistry::add("diemer_olson", &make);
+}  // namespace
 
 }  // namespace comminute::pbm

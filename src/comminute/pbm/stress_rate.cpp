@@ -1,8 +1,11 @@
 #include "comminute/pbm/stress_rate.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
+#include "comminute/core/csv_columns.hpp"
 #include "comminute/core/error.hpp"
 
 namespace comminute::pbm {
@@ -28,11 +31,36 @@ double ContactFrequencySpectrum::integral_above(double sigma) const {
   return tail_[i] + 0.5 * (n_sigma + n_[i]) * (s_[i] - sigma);
 }
 
-// seed 003: b(x) = λ ∫_{σcrit(x)}^{σmax} ṅ(σ) dσ.
+// docs/models.md eq. S2: b(x) = λ ∫_{σcrit(x)}^{σmax} ṅ(σ) dσ.
 double StressRate::rate(double size, double /*volume*/) const {
   const double sc = strength_->of_size(size);
   if (!std::isfinite(sc)) return 0.0;
   return lambda_ * spectrum_.integral_above(sc);
 }
+
+namespace {
+// Keys lambda, frequency_file (CSV stress_Pa, frequency_per_s_Pa) and strength = "<name>" with
+// the strength model's keys (CriticalStressRegistry).
+std::unique_ptr<SelectionFunction> make(const CaseTable& t, const ModelContext&) {
+  const double lambda = t.number("lambda", Limits::non_negative());
+  const auto path = t.file_path("frequency_file");
+  const auto csv = CsvColumns::read(path, t.key_path("frequency_file"));
+  const auto s = csv.column("stress_Pa"), n = csv.column("frequency_per_s_Pa");
+  for (std::size_t r = 0; r < s.size(); ++r) {
+    if (n[r] < 0)
+      throw InputError(path.string(), t.key_path("frequency_file"), csv.line_of_row(r),
+                       fmt::format("negative contact frequency {}", n[r]));
+    if (r > 0 && !(s[r] > s[r - 1]))
+      throw InputError(path.string(), t.key_path("frequency_file"), csv.line_of_row(r),
+                       "stress_Pa must increase");
+  }
+  if (s.size() < 2)
+    throw InputError(path.string(), t.key_path("frequency_file"), 0, "need at least two rows");
+  const std::string name = t.choice("strength", CriticalStressRegistry::names());
+  return std::make_unique<StressRate>(lambda, ContactFrequencySpectrum(s, n),
+                                      CriticalStressRegistry::create(name, t));
+}
+const bool registered = SelectionFunctionRegistry::add("stress", &make);
+}  // namespace
 
 }  // namespace comminute::pbm

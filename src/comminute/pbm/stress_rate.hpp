@@ -1,5 +1,5 @@
 #pragma once
-// Stress-based breakage rate (carbon-black mixer study, seed 003):
+// Stress-based breakage rate (carbon-black mixer study; docs/models.md eq. S2):
 //   b(d) = λ ∫_{σcrit(d)}^{σmax} ṅ(σ) dσ
 // with ṅ(σ) the specific contact frequency (1/(s·Pa)) per stress level, tabulated (e.g. from the
 // DEM's grid statistics) and taken piecewise linear; σmax = the largest tabulated stress.

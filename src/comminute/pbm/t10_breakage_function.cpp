@@ -1,46 +1,47 @@
 #include "comminute/pbm/t10_breakage_function.hpp"
 
-#include <algorithm>
-#include <boost/math/special_functions/beta.hpp>
 #include <cmath>
-#include <vector>
+#include <memory>
+
+#include "comminute/fracture/size_effect.hpp"
 
 namespace comminute::pbm {
 
-// t_n = 100 I_{t10/100}(α_n, β_n); points (1/n, t_n) plus (1/10, t10) and (1, 100).
-CumulativeTable TnFamily::progeny(double t10) const {
-  const double x = t10 / 100.0;
-  std::vector<std::pair<double, double>> pts;
-  for (std::size_t k = 0; k < n.size(); ++k)
-    pts.emplace_back(1.0 / n[k], boost::math::ibeta(alpha[k], beta[k], x));
-  pts.emplace_back(0.1, x);
-  pts.emplace_back(1.0, 1.0);
-  std::sort(pts.begin(), pts.end());
-  std::vector<double> r, p;
-  for (const auto& [s, v] : pts) {
-    r.push_back(s);
-    // keep the table monotone if a user family crosses at t10
-    p.push_back(p.empty() ? v : std::max(v, p.back()));
-  }
-  return CumulativeTable(std::move(r), std::move(p));
-}
+T10BreakageFunction::T10BreakageFunction(fracture::T10Model model, double specific_energy,
+                                         std::function<double(double)> e50, double shape_factor)
+    : model_(std::move(model)),
+      specific_energy_(specific_energy),
+      e50_(std::move(e50)),
+      shape_factor_(shape_factor) {}
 
-// Tavares (UFRJ), t10 = A[1 − exp(−b' e/E50)].
-double t10_at_energy(double A, double b_prime, double specific_energy, double e50) {
-  return A * (1 - std::exp(-b_prime * specific_energy / e50));
-}
-
-T10BreakageFunction::T10BreakageFunction(Parameters p, std::function<double(double)> e50,
-                                         double shape_factor)
-    : p_(p), e50_(std::move(e50)), shape_factor_(shape_factor) {}
-
+// docs/models.md eq. P1 at the parent's size.
 double T10BreakageFunction::t10(double parent_size) const {
-  return t10_at_energy(p_.A, p_.b_prime, p_.specific_energy, e50_(parent_size));
+  return model_.t10(specific_energy_, e50_(parent_size));
 }
 
 double T10BreakageFunction::cumulative_mass(double v, double y) const {
   const double t = t10(std::cbrt(y / shape_factor_));
-  return p_.family.progeny(t).passing(std::cbrt(v / y));
+  return t10_progeny(model_, t).passing(std::cbrt(v / y));
 }
+
+namespace {
+// Keys: the t10 model's (fracture::read_t10_model), `energy` (J/kg), and E50 either constant
+// (`e50`, J/kg) or by the size effect (fracture::read_size_effect: e_inf, d0, phi).
+std::unique_ptr<BreakageFunction> make(const CaseTable& t, const ModelContext& ctx) {
+  fracture::T10Model model = fracture::read_t10_model(t);
+  const double energy = t.number("energy", Limits::non_negative());
+  std::function<double(double)> e50;
+  if (t.has("e50")) {
+    const double e = t.number("e50", Limits::positive());
+    e50 = [e](double) { return e; };
+  } else {
+    const fracture::SizeEffect s = fracture::read_size_effect(t);
+    e50 = [s](double d) { return s.e50(d); };
+  }
+  return std::make_unique<T10BreakageFunction>(std::move(model), energy, std::move(e50),
+                                               ctx.grid.shape_factor());
+}
+const bool registered = BreakageFunctionRegistry::add("t10", &make);
+}  // namespace
 
 }  // namespace comminute::pbm

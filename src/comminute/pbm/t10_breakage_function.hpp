@@ -1,44 +1,29 @@
 #pragma once
-// The t10 / tn family (JKMRC; incomplete-beta form of the UFRJ model, Tavares): at mass-specific
-// stressing energy e,
-//   t10 = A [1 − exp(−b' e / E50)]   (%),  E50 the median fracture energy of the parent's size
-//   t_n = 100 I_{t10/100}(α_n, β_n),  n ∈ {2, 4, 25, 50, 75}
-// and the progeny passes t_n % at d = D/n (t_1 = 100 %); see CumulativeTable for interpolation.
-#include <array>
+// The t10 breakage function (JKMRC t10 with the UFRJ incomplete-beta t_n family; docs/models.md
+// eq. B5): every parent is stressed at one mass-specific energy e, its progeny has
+//   t10 = A [1 - exp(-b' e / E50(D))]   and   t_n = 100 I_{t10/100}(alpha_n, beta_n)
+// (fracture::T10Model) and passes t_n % at d = D/n (t_1 = 100 %), interpolated as the DEM
+// progeny is (t10_progeny, docs/models.md eq. P3).
 #include <functional>
 
+#include "comminute/fracture/t10_model.hpp"
 #include "comminute/pbm/breakage_function.hpp"
-#include "comminute/pbm/cumulative_table.hpp"
+#include "comminute/pbm/progeny_fractions.hpp"
 
 namespace comminute::pbm {
 
-// The α_n, β_n of the t_n–t10 relation for n = 2, 4, 25, 50, 75 (material inputs).
-struct TnFamily {
-  static constexpr std::array<double, 5> n = {2, 4, 25, 50, 75};
-  std::array<double, 5> alpha{}, beta{};
-  // t10 in % (0, 100) → progeny cumulative mass passing against d/D.
-  CumulativeTable progeny(double t10) const;
-};
-
-// t10 = A [1 − exp(−b' e/E50)] in %.
-double t10_at_energy(double A, double b_prime, double specific_energy, double e50);
-
 class T10BreakageFunction : public BreakageFunction {
  public:
-  struct Parameters {
-    double A = 50;               // %
-    double b_prime = 1.0;        // b'
-    double specific_energy = 0;  // e, J/kg
-    TnFamily family;
-  };
-  // e50(d): median fracture energy (J/kg) of a parent of size d (m).
-  T10BreakageFunction(Parameters p, std::function<double(double)> e50, double shape_factor);
+  // specific_energy: e (J/kg); e50(d): median fracture energy (J/kg) of a parent of size d (m).
+  T10BreakageFunction(fracture::T10Model model, double specific_energy,
+                      std::function<double(double)> e50, double shape_factor);
 
   double t10(double parent_size) const;
   double cumulative_mass(double v, double y) const override;
 
  private:
-  Parameters p_;
+  fracture::T10Model model_;
+  double specific_energy_;
   std::function<double(double)> e50_;
   double shape_factor_;
 };

@@ -2,18 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "comminute/core/error.hpp"
-#include "comminute/pbm/damage.hpp"
+#include "comminute/fracture/damage.hpp"
+#include "comminute/pbm/t10_breakage_function.hpp"
 
 namespace comminute::pbm {
 
 UfrjMill::UfrjMill(const SizeGrid& grid, double density, UfrjParameters p)
-    : n_(grid.classes()), m_(p.energy_bins), p_(std::move(p)) {
+    : n_(grid.classes()), m_(p.energy_bins), p_(std::move(p)), t10_(p_.progeny) {
   if (m_ < 4) throw Error("UfrjMill: need at least 4 energy bins");
-  // Bins of ln(E/E50) from 1e−4 E50 to the upper truncation E_max/E50.
+  if (!std::isfinite(p_.fracture.emax_ratio))
+    throw Error("UfrjMill: the fracture-energy distribution must be truncated (finite Emax/E50)");
+  // Bins of ln(E/E50) from 1e−4 E50 to the upper truncation E_max/E50 (eq. U4).
   ln_lo_ = std::log(1e-4);
-  ln_step_ = (std::log(p_.fracture.max_ratio) - ln_lo_) / static_cast<double>(m_);
+  ln_step_ = (std::log(p_.fracture.emax_ratio) - ln_lo_) / static_cast<double>(m_);
   auto edge = [&](std::size_t j) { return std::exp(ln_lo_ + ln_step_ * static_cast<double>(j)); };
   virgin_ = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m_), static_cast<Eigen::Index>(n_));
   stress_.resize(n_);
@@ -24,7 +28,7 @@ UfrjMill::UfrjMill(const SizeGrid& grid, double density, UfrjParameters p)
       virgin_(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(i)) =
           p_.fracture.cdf(edge(j + 1) * e50_[i], x) -
           (j == 0 ? 0.0 : p_.fracture.cdf(edge(j) * e50_[i], x));
-    // Capture (notes §5): N_cap = 1/4 + 3/4 (2 r_c/x)² for r_c ≥ x/2.
+    // Capture (docs/models.md eq. U1): N_cap = 1/4 + 3/4 (2 r_c/x)² for r_c ≥ x/2.
     const double rc = p_.capture_radius > 0 ? p_.capture_radius : std::sqrt(p_.ball_radius * x);
     const double ncap = rc >= x / 2 ? 0.25 + 0.75 * std::pow(2 * rc / x, 2) : 1.0;
     mstar_.push_back(density * grid.pivot_volume(i) * ncap);
@@ -43,7 +47,8 @@ UfrjMill::UfrjMill(const SizeGrid& grid, double density, UfrjParameters p)
         // survivors sit at the geometric centre of their part of the bin, then are damaged
         const double lo_s = std::max(lo, std::min(r, hi));
         const double eps = f < 1 ? std::sqrt(lo_s * hi) : hi;
-        const double eps_d = f < 1 ? eps * (1 - damage(p_.damage_gamma, r / eps)) : eps;
+        const double eps_d =
+            f < 1 ? eps * (1 - fracture::tavares_king_damage(p_.damage_gamma, r / eps)) : eps;
         const double pos = (std::log(eps_d) - ln_lo_) / ln_step_ - 0.5;  // in bin-centre units
         const double c = std::clamp(pos, 0.0, static_cast<double>(m_ - 1));
         const auto b = std::min(static_cast<std::size_t>(c), m_ - 2);
@@ -51,7 +56,7 @@ UfrjMill::UfrjMill(const SizeGrid& grid, double density, UfrjParameters p)
         s.w_lo.push_back(1 - (c - static_cast<double>(b)));
       }
       // Progeny at this energy: t10-based cumulative, lumped by mass into classes 0..i.
-      const CumulativeTable tab = progeny(i, k);
+      const ProgenyFractions tab = progeny(i, k);
       double below = 0;
       for (std::size_t c = 0; c <= i; ++c) {
         const double upper = c == i ? 1.0 : tab.passing(std::cbrt(grid.volume_edge(c + 1) / y));
@@ -63,15 +68,17 @@ UfrjMill::UfrjMill(const SizeGrid& grid, double density, UfrjParameters p)
   }
 }
 
-// e_ik = η E_k / m*_i: the powder's share split equally among the captured particles.
+// docs/models.md eq. U2, e_ik = η E_k / m*_i: the powder's share split equally among the captured
+// particles.
 double UfrjMill::specific_energy(std::size_t i, std::size_t k) const {
   return p_.energy_share * p_.spectrum.energy[k] / mstar_[i];
 }
 
-CumulativeTable UfrjMill::progeny(std::size_t i, std::size_t k) const {
-  return p_.family.progeny(t10_at_energy(p_.t10_A, p_.t10_b, specific_energy(i, k), e50_[i]));
+ProgenyFractions UfrjMill::progeny(std::size_t i, std::size_t k) const {
+  return t10_progeny(t10_, t10_.t10(specific_energy(i, k), e50_[i]));
 }
 
+// docs/models.md eq. U3-U5: captured mass breaks (bins below e) or is damaged and moved down.
 void UfrjMill::derivative(double, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const {
   dydt.setZero(y.size());
   Eigen::VectorXd born = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n_));
@@ -128,6 +135,7 @@ Eigen::VectorXd UfrjMill::median_fracture_energy(const Eigen::VectorXd& state) c
   return med;
 }
 
+// docs/models.md eq. S5 with P = F_i of the virgin bins (eq. U1-U2, U5).
 std::vector<double> UfrjMill::virgin_rates() const {
   std::vector<double> s(n_, 0.0);
   for (std::size_t i = 1; i < n_; ++i)
@@ -137,5 +145,30 @@ std::vector<double> UfrjMill::virgin_rates() const {
                 virgin_(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(i));
   return s;
 }
+
+namespace {
+// The [mill] table: spectrum_file, holdup, energy_share, capture_radius or ball_diameter,
+// damage_gamma, energy_bins, [mill.fracture_energy] (fracture::read_fracture_energy_model) and
+// [mill.progeny] (fracture::read_t10_model).
+std::unique_ptr<MillModel> make(const CaseTable& t, const ModelContext& ctx) {
+  UfrjParameters u;
+  u.spectrum = read_collision_spectrum(t, "spectrum_file");
+  u.holdup = t.number("holdup", Limits::positive());
+  u.energy_share = t.number("energy_share", {0, 1, true, false}, 1.0);
+  if (t.has("capture_radius"))
+    u.capture_radius = t.number("capture_radius", Limits::positive());
+  else
+    u.ball_radius = 0.5 * t.number("ball_diameter", Limits::positive());
+  const CaseTable fe = t.table("fracture_energy");
+  u.fracture = fracture::read_fracture_energy_model(fe);
+  if (!std::isfinite(u.fracture.emax_ratio))
+    fe.fail("emax_ratio", "the UFRJ mill bins ln(E/E50) up to Emax/E50: give a finite emax_ratio");
+  u.damage_gamma = fracture::read_damage_gamma(t);
+  u.energy_bins = static_cast<std::size_t>(t.integer("energy_bins", 4, 10000, 60));
+  u.progeny = fracture::read_t10_model(t.table("progeny")).parameters();
+  return std::make_unique<UfrjMill>(ctx.grid, ctx.density, std::move(u));
+}
+const bool registered = MillRegistry::add("ufrj", &make);
+}  // namespace
 
 }  // namespace comminute::pbm

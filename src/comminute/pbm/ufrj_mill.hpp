@@ -1,43 +1,45 @@
 #pragma once
 // The UFRJ mechanistic ball-mill model (Tavares & de Carvalho, Minerals Eng. 22 (2009) 650;
-// de Carvalho & Tavares, Minerals Eng. 43–44 (2013) 91 — equations per MODELS-pbm-notes.md §5,
-// flagged there as to be verified against the papers):
+// de Carvalho & Tavares, Minerals Eng. 43–44 (2013) 91; docs/models.md eq. U1–U5 — the equations
+// are this code's reading of the papers, to be verified against them):
 //  * collisions of energy class k (E_k, λ_k from the DEM) capture m*_i = m_p,i N_cap,i of size
 //    class i, N_cap = 1/4 + 3/4 (2 r_c/x)² for r_c ≥ x/2 (else 1), r_c the capture radius
-//    (placeholder geometric r_c = √(R x) from the ball radius R, or a constant);
-//  * the powder's share η E_k is split equally among the captured particles: e_ik = η E_k/m*_i;
+//    (placeholder geometric r_c = √(R x) from the ball radius R, or a constant)         (eq. U1);
+//  * the powder's share η E_k is split equally among the captured particles: e_ik = η E_k/m*_i
+//                                                                                      (eq. U2);
 //  * the captured particles whose fracture energy is below e_ik break, with the t10-based
-//    progeny t10 = A[1 − exp(−b' e/E50,i)]; the others are damaged (Tavares & King) and their
-//    fracture energy E drops to E(1 − D(e/E));
-//  * fracture energies per size class start from the upper-truncated lognormal F_i and are
-//    tracked as mass in bins of ln(E/E50,i), so the distribution weakens as grinding proceeds;
-//    fragments enter their class with the virgin distribution.
-// Captured fraction of class i per second: λ_k m*_i/H. The finest class does not break.
+//    progeny (fracture::T10Model, eq. P1–P2, E50 of the class); the others are damaged
+//    (fracture::tavares_king_damage, eq. D1–D2) and their fracture energy E drops to
+//    E(1 − D(e/E))                                                                      (eq. U3);
+//  * fracture energies per size class start from the upper-truncated lognormal F_i
+//    (fracture::FractureEnergyModel, eq. F1–F3) and are tracked as mass in bins of ln(E/E50,i),
+//    so the distribution weakens as grinding proceeds; fragments enter their class with the
+//    virgin distribution                                                                (eq. U4).
+// Captured fraction of class i per second: λ_k m*_i/H (eq. U5). The finest class does not break.
+// Registered as the mill model "ufrj" ([solver] method = "ufrj", keys in [mill]).
 #include <Eigen/Dense>
 #include <vector>
 
-#include "comminute/pbm/collision_spectrum.hpp"
-#include "comminute/pbm/fracture_energy.hpp"
-#include "comminute/pbm/ode.hpp"
+#include "comminute/fracture/fracture_energy_model.hpp"
+#include "comminute/fracture/t10_model.hpp"
+#include "comminute/pbm/mill_model.hpp"
 #include "comminute/pbm/size_grid.hpp"
-#include "comminute/pbm/t10_breakage_function.hpp"
 
 namespace comminute::pbm {
 
 struct UfrjParameters {
   CollisionSpectrum spectrum;
-  double holdup = 1;          // kg
-  double energy_share = 1;    // η
-  double ball_radius = 0;     // m: r_c = √(R x) when capture_radius is 0
-  double capture_radius = 0;  // m
-  FractureEnergyModel fracture;
-  double damage_gamma = 5;  // γ of the damage law
-  double t10_A = 50, t10_b = 1;
-  TnFamily family;
+  double holdup = 1;                       // kg
+  double energy_share = 1;                 // η
+  double ball_radius = 0;                  // m: r_c = √(R x) when capture_radius is 0
+  double capture_radius = 0;               // m
+  fracture::FractureEnergyModel fracture;  // emax_ratio must be finite (the bins end there)
+  double damage_gamma = 5;                 // γ of the damage law
+  fracture::T10Parameters progeny;
   std::size_t energy_bins = 60;
 };
 
-class UfrjMill : public OdeSystem {
+class UfrjMill : public MillModel {
  public:
   UfrjMill(const SizeGrid& grid, double density, UfrjParameters p);
 
@@ -45,16 +47,17 @@ class UfrjMill : public OdeSystem {
   void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) const override;
 
   // State from mass per class (virgin fracture energies) and back.
-  Eigen::VectorXd initial_state(const Eigen::VectorXd& mass) const;
-  Eigen::VectorXd class_mass(const Eigen::VectorXd& state) const;
+  Eigen::VectorXd initial_state(const Eigen::VectorXd& mass) const override;
+  Eigen::VectorXd class_mass(const Eigen::VectorXd& state) const override;
   // Median fracture energy (J/kg) of each class's unbroken material.
-  Eigen::VectorXd median_fracture_energy(const Eigen::VectorXd& state) const;
+  Eigen::VectorXd median_fracture_energy(const Eigen::VectorXd& state) const override;
   // Breakage rate of virgin material, Σ_k (λ_k m*_i/H) F_i(e_ik) (1/s).
-  std::vector<double> virgin_rates() const;
+  std::vector<double> virgin_rates() const override;
   double captured_mass(std::size_t i) const { return mstar_[i]; }
   // Specific energy e_ik (J/kg) and the t10 progeny of class i stressed by energy class k.
   double specific_energy(std::size_t i, std::size_t k) const;
-  CumulativeTable progeny(std::size_t i, std::size_t k) const;
+  ProgenyFractions progeny(std::size_t i, std::size_t k) const override;
+  const CollisionSpectrum& spectrum() const override { return p_.spectrum; }
 
  private:
   struct Stress {                 // one (class, energy class) pair
@@ -70,6 +73,7 @@ class UfrjMill : public OdeSystem {
   Eigen::MatrixXd virgin_;                   // (m_ × n_) virgin bin fractions per class
   std::vector<std::vector<Stress>> stress_;  // [class][energy class]
   UfrjParameters p_;
+  fracture::T10Model t10_;
 };
 
 }  // namespace comminute::pbm

@@ -12,7 +12,7 @@
 #include <memory>
 #include <string>
 
-#include "comminute/breakage/criteria/parameter_source.hpp"
+#include "comminute/core/case_table.hpp"
 #include "comminute/core/registry.hpp"
 #include "comminute/core/rng.hpp"
 #include "comminute/particles/material.hpp"
@@ -51,11 +51,16 @@ class BreakageCriterion {
   // Model probability that a fresh particle of diameter d breaks in one event with absorbed
   // specific energy `energy` (J/kg) or peak force `force` (N); the plotted model curve.
   virtual double probability(double d, const StressingEvent& e) const = 0;
+  // True when probability() depends on the absorbed specific energy (the model curve of
+  // breakage_model.csv is then plotted against it); false for force criteria.
+  virtual bool energy_based() const = 0;
   // Median specific fracture energy of size d (J/kg) used by the t10 model (E50b), or a negative
   // number when the criterion has none (the progeny table then needs reference_energy).
   virtual double median_fracture_energy(double /*d*/) const { return -1.0; }
 };
 
-using CriterionRegistry = Registry<BreakageCriterion, const ParameterSource&, const Material&>;
+// A criterion's factory reads its own keys from the material's [materials.<m>.breakage] table;
+// the material gives the elastic constants of the energy partition.
+using CriterionRegistry = Registry<BreakageCriterion, const CaseTable&, const Material&>;
 
 }  // namespace comminute::breakage

@@ -1,6 +1,5 @@
 #include "comminute/breakage/criteria/composition_peak_force.hpp"
 
-#include <limits>
 #include <string>
 
 namespace comminute::breakage {
@@ -13,7 +12,7 @@ void CompositionPeakForce::attach(ParticleStore& p) {
 }
 
 double CompositionPeakForce::critical_force(const ParticleStore& p, std::size_t i, double d) const {
-  double s = 0;  // seed 000 eq. 2: sum_k C_k f_rel,k
+  double s = 0;  // Cleary & Sinnott (2015), docs/models.md eq. C2: sum_k C_k f_rel,k
   for (std::size_t k = 0; k < composition_.size(); ++k)
     s += p.field(composition_[k])[i] * relative_strength_[k];
   return law_(d) * s;
@@ -24,11 +23,11 @@ double CompositionPeakForce::nominal_critical_force(double d) const {
 }
 
 namespace {
-std::unique_ptr<BreakageCriterion> make_composition(const ParameterSource& s, const Material&) {
-  auto law = read_critical_force_law(s);
-  auto sigma = read_factor_sigma(s);
-  auto f_rel = s.numbers("relative_strength", 0, std::numeric_limits<double>::infinity());
-  if (f_rel.empty()) s.fail("relative_strength", "needs one value per phase");
+std::unique_ptr<BreakageCriterion> make_composition(const CaseTable& t, const Material&) {
+  auto law = read_critical_force_law(t);
+  auto sigma = read_factor_sigma(t);
+  auto f_rel = t.numbers("relative_strength", Limits::non_negative());
+  if (f_rel.empty()) t.fail("relative_strength", "needs one value per phase");
   return std::make_unique<CompositionPeakForce>(law, sigma, f_rel);
 }
 const bool registered_composition =

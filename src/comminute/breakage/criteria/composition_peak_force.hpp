@@ -1,6 +1,6 @@
 #pragma once
-// Composition-dependent peak force (Cleary & Sinnott 2015; seed 000 eq. 2-3, MODELS.md
-// "Peak-force criteria"): the peak-force criterion with a critical force weighted by the
+// Composition-dependent peak force (Cleary & Sinnott, Minerals Eng. 74 (2015) 178;
+// docs/models.md eq. C2): the peak-force criterion with a critical force weighted by the
 // particle's composition.
 #include <vector>
 
@@ -8,9 +8,9 @@
 
 namespace comminute::breakage {
 
-// Composition-dependent peak force (seed 000 eq. 2-3): F_crit(x, C) = sum_k F_CS(x) C_k f_rel,k,
-// with the particle's composition vector in fields "composition.0", "composition.1", ... (phase 0
-// defaults to 1, the others to 0; fragments inherit the parent's composition).
+// Composition-dependent peak force (docs/models.md eq. C2): F_crit(x, C) = sum_k F_CS(x) C_k
+// f_rel,k, with the particle's composition vector in fields "composition.0", "composition.1", ...
+// (phase 0 defaults to 1, the others to 0; fragments inherit the parent's composition).
 class CompositionPeakForce final : public PeakForce {
  public:
   CompositionPeakForce(const CriticalForceLaw& law, double factor_sigma,

@@ -1,7 +1,6 @@
 #include "comminute/breakage/criteria/peak_force.hpp"
 
 #include <cmath>
-#include <limits>
 
 namespace comminute::breakage {
 
@@ -38,20 +37,18 @@ double PeakForce::probability(double d, const StressingEvent& e) const {
   return 0.5 * std::erfc(-std::log(e.peak_force / f) / (factor_sigma_ * std::sqrt(2.0)));
 }
 
-CriticalForceLaw read_critical_force_law(const ParameterSource& s) {
-  const double inf = std::numeric_limits<double>::infinity();
-  return {s.number("a", 0, inf, false, ParameterSource::required),
-          s.number("b", -inf, inf, false, ParameterSource::required),
-          s.number("c", -inf, inf, false, 0.0)};
+CriticalForceLaw read_critical_force_law(const CaseTable& t) {
+  return {t.number("a", Limits::non_negative()), t.number("b", Limits::any()),
+          t.number("c", Limits::any(), 0.0)};
 }
 
-double read_factor_sigma(const ParameterSource& s) {
-  return s.number("factor_sigma", 0, std::numeric_limits<double>::infinity(), false, 0.0);
+double read_factor_sigma(const CaseTable& t) {
+  return t.number("factor_sigma", Limits::non_negative(), 0.0);
 }
 
 namespace {
-std::unique_ptr<BreakageCriterion> make_peak(const ParameterSource& s, const Material&) {
-  return std::make_unique<PeakForce>(read_critical_force_law(s), read_factor_sigma(s));
+std::unique_ptr<BreakageCriterion> make_peak(const CaseTable& t, const Material&) {
+  return std::make_unique<PeakForce>(read_critical_force_law(t), read_factor_sigma(t));
 }
 const bool registered_peak = CriterionRegistry::add("peak_force", &make_peak);
 }  // namespace

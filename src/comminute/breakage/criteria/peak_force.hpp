@@ -1,14 +1,13 @@
 #pragma once
-// Peak-force criteria (Cleary & Sinnott 2015; seed 000 eq. 1-3, MODELS.md "Peak-force criteria").
+// Peak-force criteria (Cleary & Sinnott, Minerals Eng. 74 (2015) 178; docs/models.md eq. C1-C2).
 // A particle breaks when the peak of the sum of elastic normal contact forces on it within one
 // stressing event reaches F_crit(d) times its own random strength factor (lognormal with median
 // 1 and log-standard-deviation `factor_sigma`; 0 = deterministic). The force is not time-filtered.
 #include "comminute/breakage/criteria/breakage_criterion.hpp"
-#include "comminute/breakage/criteria/parameter_source.hpp"
 
 namespace comminute::breakage {
 
-// F_CS(x) = a x^b + c, x the diameter (m), F in N (seed 000 eq. 1).
+// F_CS(x) = a x^b + c, x the diameter (m), F in N (docs/models.md eq. C1).
 struct CriticalForceLaw {
   double a = 0, b = 1.5, c = 0;
   double operator()(double x) const;
@@ -26,6 +25,7 @@ class PeakForce : public BreakageCriterion {
   double strength(const ParticleStore& p, std::size_t i, double d) const override;
   std::string strength_unit() const override { return "N"; }
   double probability(double d, const StressingEvent& e) const override;
+  bool energy_based() const override { return false; }
 
  protected:
   // Critical force of particle i before its random factor (N).
@@ -40,7 +40,7 @@ class PeakForce : public BreakageCriterion {
 };
 
 // Case-file parameters shared by the peak-force family: a, b, c of F_CS and factor_sigma.
-CriticalForceLaw read_critical_force_law(const ParameterSource& s);
-double read_factor_sigma(const ParameterSource& s);
+CriticalForceLaw read_critical_force_law(const CaseTable& t);
+double read_factor_sigma(const CaseTable& t);
 
 }  // namespace comminute::breakage

@@ -1,19 +1,15 @@
 #include "comminute/breakage/criteria/tavares.hpp"
 
 #include <cmath>
-#include <limits>
 
-#include "comminute/breakage/criteria/damage.hpp"
+#include "comminute/fracture/damage.hpp"
+#include "comminute/fracture/energy_share.hpp"
 
 namespace comminute::breakage {
 
 void Tavares::attach(ParticleStore& p) {
   energy_ = p.add_field("tavares.fracture_energy", 0.0);  // J/kg, current (after damage)
   damage_ = p.add_field("tavares.damage", 0.0);           // accumulated D = 1 - E/E_initial
-}
-
-FractureEnergyDistribution Tavares::distribution(double d) const {
-  return {p_.size_effect.e50(d), p_.sigma, p_.emax_ratio};
 }
 
 void Tavares::initialize(ParticleStore& p, std::size_t i, double d, Rng& rng) const {
@@ -28,8 +24,8 @@ bool Tavares::breaks(const ParticleStore& p, std::size_t i, double, const Stress
 void Tavares::survive(ParticleStore& p, std::size_t i, double, const StressingEvent& e) const {
   if (e.specific_energy < p_.min_damage_energy) return;
   double& energy = p.field(energy_)[i];
-  const double d = tavares_king_damage(p_.gamma, e.specific_energy / energy);
-  energy *= 1.0 - d;  // E <- E(1 - D), seed 002 eq. 15
+  const double d = fracture::tavares_king_damage(p_.gamma, e.specific_energy / energy);
+  energy *= 1.0 - d;  // E <- E(1 - D), Tavares & King (2002), docs/models.md eq. D2
   double& total = p.field(damage_)[i];
   total = 1.0 - (1.0 - total) * (1.0 - d);
 }
@@ -47,23 +43,21 @@ double Tavares::probability(double d, const StressingEvent& e) const {
 }
 
 namespace {
-std::unique_ptr<BreakageCriterion> make(const ParameterSource& s, const Material& m) {
-  const double inf = std::numeric_limits<double>::infinity();
+// Keys: the fracture energies (fracture::read_fracture_energy_model), damage_gamma,
+// min_damage_energy, and the basis of e_inf (docs/breakage.md).
+std::unique_ptr<BreakageCriterion> make(const CaseTable& t, const Material& m) {
   TavaresParameters p;
-  p.size_effect.e_inf = s.number("e_inf", 0, inf, true, ParameterSource::required);
-  p.size_effect.d0 = s.number("d0", 0, inf, false, 0.0);
-  p.size_effect.phi = s.number("phi", 0, inf, false, 1.0);
-  p.sigma = s.number("sigma", 0, inf, true, ParameterSource::required);
-  p.emax_ratio = s.number("emax_ratio", 1, inf, true, inf);
-  p.gamma = s.number("gamma", 0, inf, true, 5.0);
-  p.min_damage_energy = s.number("min_damage_energy", 0, inf, false, 0.0);
+  static_cast<fracture::FractureEnergyModel&>(p) = fracture::read_fracture_energy_model(t);
+  p.gamma = fracture::read_damage_gamma(t);
+  p.min_damage_energy = t.number("min_damage_energy", Limits::non_negative(), 0.0);
   // E_inf measured as applied energy against a device (steel by default) or as absorbed energy.
-  const std::string basis = s.choice("e_inf_basis", {"applied", "absorbed"}, "applied");
+  const std::string basis = t.choice("e_inf_basis", {"applied", "absorbed"}, "applied");
   if (basis == "applied") {
-    const double ks = plane_strain_modulus(s.number("device_youngs_modulus", 0, inf, true, 210e9),
-                                           s.number("device_poisson_ratio", 0, 0.5, false, 0.3));
-    p.size_effect.partition =
-        energy_share(plane_strain_modulus(m.youngs_modulus, m.poisson_ratio), ks);
+    const double ks = fracture::plane_strain_modulus(
+        t.number("device_youngs_modulus", Limits::positive(), 210e9),
+        t.number("device_poisson_ratio", Limits::between(0.0, 0.5), 0.3));
+    p.size_effect.partition = fracture::energy_share(
+        fracture::plane_strain_modulus(m.youngs_modulus, m.poisson_ratio), ks);  // eq. F5
   }
   return std::make_unique<Tavares>(p);
 }

@@ -1,20 +1,16 @@
 #pragma once
-// Tavares (UFRJ) energy criterion with Tavares-King damage (MODELS.md; seed 002 eq. 10-15).
+// Tavares (UFRJ) energy criterion with Tavares-King damage (docs/models.md eq. F1-F5, D1-D2).
 // Each particle draws a specific fracture energy E from the upper-truncated lognormal distribution
-// of its size; it breaks when the energy absorbed in one stressing event reaches E; otherwise the
-// event damages it, E <- E (1 - D).
-#include <limits>
-
+// of its size (fracture::FractureEnergyModel); it breaks when the energy absorbed in one stressing
+// event reaches E; otherwise the event damages it, E <- E (1 - D) (fracture::tavares_king_damage).
 #include "comminute/breakage/criteria/breakage_criterion.hpp"
-#include "comminute/breakage/criteria/fracture_energy.hpp"
+#include "comminute/fracture/fracture_energy_model.hpp"
 
 namespace comminute::breakage {
 
-struct TavaresParameters {
-  SizeEffect size_effect;                                       // E50(d)
-  double sigma = 0.8;                                           // standard deviation of ln E*
-  double emax_ratio = std::numeric_limits<double>::infinity();  // Emax/E50 (infinity: untruncated)
-  double gamma = 5.0;                                           // damage exponent
+// The fracture energies (size_effect, sigma, emax_ratio) plus the damage settings.
+struct TavaresParameters : fracture::FractureEnergyModel {
+  double gamma = 5.0;              // damage exponent (case key damage_gamma)
   double min_damage_energy = 0.0;  // J/kg, events absorbing less do not damage (Rocky's e_min)
 };
 
@@ -31,8 +27,9 @@ class Tavares final : public BreakageCriterion {
   std::string strength_unit() const override { return "J/kg"; }
   double damage(const ParticleStore& p, std::size_t i) const override;
   double probability(double d, const StressingEvent& e) const override;
-  double median_fracture_energy(double d) const override { return p_.size_effect.e50(d); }
-  FractureEnergyDistribution distribution(double d) const;
+  bool energy_based() const override { return true; }
+  double median_fracture_energy(double d) const override { return p_.e50(d); }
+  fracture::FractureEnergyDistribution distribution(double d) const { return p_.distribution(d); }
   const TavaresParameters& parameters() const { return p_; }
 
  private:

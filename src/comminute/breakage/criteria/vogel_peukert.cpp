@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace comminute::breakage {
 
@@ -17,7 +16,7 @@ void VogelPeukert::initialize(ParticleStore& p, std::size_t i, double, Rng& rng)
 }
 
 double VogelPeukert::probability_of_excess(double d, double excess) const {
-  return 1.0 - std::exp(-p_.f_mat * d * excess);  // Vogel & Peukert 2003, incremental form
+  return p_.probability(d, excess);  // Vogel & Peukert 2003, incremental form
 }
 
 bool VogelPeukert::breaks(const ParticleStore& p, std::size_t i, double d,
@@ -43,12 +42,8 @@ double VogelPeukert::probability(double d, const StressingEvent& e) const {
 }
 
 namespace {
-std::unique_ptr<BreakageCriterion> make(const ParameterSource& s, const Material&) {
-  const double inf = std::numeric_limits<double>::infinity();
-  VogelPeukertParameters p;
-  p.f_mat = s.number("f_mat", 0, inf, true, ParameterSource::required);
-  p.threshold_product = s.number("threshold_product", 0, inf, false, 0.0);
-  return std::make_unique<VogelPeukert>(p);
+std::unique_ptr<BreakageCriterion> make(const CaseTable& t, const Material&) {
+  return std::make_unique<VogelPeukert>(fracture::read_vogel_peukert(t));
 }
 const bool registered = CriterionRegistry::add("vogel_peukert", &make);
 }  // namespace

@@ -1,8 +1,9 @@
 #pragma once
-// Placing fragments inside the parent sphere (MODELS.md "Fragment placement"; seed 000's
-// shrink-then-grow). Fragments carry their final mass from the start (so momentum is exact and no
-// mass is ever missing); their radius starts shrunk so that overlaps with siblings, neighbours and
-// walls are at most eps min(r_i, r_j), and grows afterwards (FragmentGrowth, in the module).
+// Placing fragments inside the parent sphere (docs/models.md eq. C4, the
+// shrink-then-grow scheme). Fragments carry their final mass from the start (so momentum is exact
+// and no mass is ever missing); their radius starts shrunk so that overlaps with siblings,
+// neighbours and walls are at most eps min(r_i, r_j), and grows afterwards (FragmentGrowth, in the
+// module).
 #include <functional>
 #include <vector>
 

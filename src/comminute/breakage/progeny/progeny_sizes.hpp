@@ -1,6 +1,6 @@
 #pragma once
 // Fragment sizes of one breakage event, drawn so that their masses add up to the parent's mass
-// exactly (MODELS.md "Progeny"). Stratified sampling: the size range is cut into classes at the
+// exactly (docs/models.md eq. P4). Stratified sampling: the size range is cut into classes at the
 // t_n sizes d/2, d/4, d/10, d/25, d/50, d/75 and below d/75 on a sqrt2 series down to the minimum
 // fragment size; each class receives the parent mass times its share of the progeny distribution
 // and is filled with fragments whose sizes are drawn from the class's number distribution
@@ -9,10 +9,12 @@
 // passes its mass on to the next finer class. Mass below the minimum fragment size is fines.
 #include <vector>
 
-#include "comminute/breakage/progeny/progeny_distribution.hpp"
 #include "comminute/core/rng.hpp"
+#include "comminute/fracture/progeny_distribution.hpp"
 
 namespace comminute::breakage {
+
+using fracture::ProgenyDistribution;
 
 enum class FinesRule {
   particles,  // fines become non-breakable particles of about the minimum size

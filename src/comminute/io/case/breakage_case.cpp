@@ -6,49 +6,17 @@
 
 #include "comminute/analysis/size_distribution_observer.hpp"
 #include "comminute/core/error.hpp"
-#include "comminute/core/units.hpp"
+#include "comminute/fracture/rayleigh_time.hpp"
 
 namespace comminute::io {
 
 namespace {
 
-// CaseTable seen through the breakage models' ParameterSource.
-class CaseParameters final : public breakage::ParameterSource {
- public:
-  explicit CaseParameters(const CaseTable& t) : t_(t) {}
-  double number(const std::string& key, double lo, double hi, bool lo_open,
-                double fallback) const override {
-    const Limits lim{lo, hi, lo_open, false};
-    return std::isnan(fallback) ? t_.number(key, lim) : t_.number(key, lim, fallback);
-  }
-  std::vector<double> numbers(const std::string& key, double lo, double hi) const override {
-    return t_.numbers(key, Limits{lo, hi});
-  }
-  std::string choice(const std::string& key, const std::vector<std::string>& choices,
-                     const std::string& fallback) const override {
-    return t_.choice(key, choices, fallback);
-  }
-  bool has(const std::string& key) const override { return t_.has(key); }
-  [[noreturn]] void fail(const std::string& key, const std::string& message) const override {
-    t_.fail(key, message);
-  }
-
- private:
-  const CaseTable& t_;
-};
-
-std::array<double, 5> five(const CaseTable& t, std::string_view key) {
-  const auto v = t.numbers(key, Limits::positive());
-  if (v.size() != 5)
-    t.fail(key, "needs 5 values, for n = 2, 4, 25, 50, 75 (got " + std::to_string(v.size()) + ")");
-  return {v[0], v[1], v[2], v[3], v[4]};
-}
-
 breakage::MaterialBreakage read_material(const CaseTable& b, const Material& mat) {
   breakage::MaterialBreakage m;
   const auto names = breakage::CriterionRegistry::names();
   const std::string criterion = b.choice("criterion", names);
-  m.criterion = breakage::CriterionRegistry::create(criterion, CaseParameters(b), mat);
+  m.criterion = breakage::CriterionRegistry::create(criterion, b, mat);
   m.min_breakable_size = b.number("min_breakable_size", Limits::non_negative(), 0.0);
   m.min_fragment_size = b.number("min_fragment_size", Limits::non_negative(), 0.0);
   m.min_fragment_ratio = b.number("min_fragment_ratio", Limits{0.0, 1.0, false, true}, 0.05);
@@ -61,16 +29,8 @@ breakage::MaterialBreakage read_material(const CaseTable& b, const Material& mat
            "set min_fragment_size or min_breakable_size (m) > 0: otherwise fragments shrink "
            "without limit and so does the time step");
   const CaseTable pr = b.table("progeny");
-  breakage::T10Parameters t;
-  t.a = pr.number("A", Limits{0.0, 100.0, true, false});
-  t.b_prime = pr.number("b_prime", Limits::positive());
-  t.alpha = five(pr, "alpha");
-  t.beta = five(pr, "beta");
-  try {
-    m.progeny = breakage::T10Model(t);
-  } catch (const Error& e) {
-    pr.fail("", e.what());
-  }
+  m.progeny = breakage::ProgenyRegistry::create(
+      pr.choice("model", breakage::ProgenyRegistry::names(), "t10"), pr);
   if (m.criterion->median_fracture_energy(1.0) <= 0)
     m.reference_energy = pr.number("reference_energy", Limits::positive());
   else
@@ -101,8 +61,8 @@ breakage::BreakageModule* add_breakage(const CaseTable& root, DemCase& dem) {
   analysis::SieveOptions sieves;
   double psd_interval = 0;
   if (g) {
-    opt.placement.overlap_ratio = g->number("overlap_ratio", Limits{0.0, 0.5, true, false}, 0.01);
-    opt.placement.attempts = static_cast<int>(g->integer("placement_attempts", 1, 10000, 30));
+    opt.placement_model = breakage::PlacementRegistry::create(
+        g->choice("placement", breakage::PlacementRegistry::names(), "inside_parent"), *g);
     opt.growth_step = g->number("growth_step", Limits{0.0, 1.0, true, false}, 0.005);
     opt.growth_overlap_ratio =
         g->number("growth_overlap_ratio", Limits{0.0, 0.5, false, false}, 0.001);
@@ -122,8 +82,8 @@ breakage::BreakageModule* add_breakage(const CaseTable& root, DemCase& dem) {
     const double d = std::max(mats[k]->min_fragment_size,
                               mats[k]->min_fragment_ratio * mats[k]->min_breakable_size);
     const Material& m = sim.materials.material(static_cast<std::uint16_t>(k));
-    const double t_rayleigh = units::pi * 0.5 * d * std::sqrt(m.density / m.shear_modulus()) /
-                              (0.1631 * m.poisson_ratio + 0.8766);
+    const double t_rayleigh =
+        fracture::rayleigh_time(d, m.density, m.shear_modulus(), m.poisson_ratio);
     const double fraction =
         simulation.number("time_step_fraction", Limits{0.0, 1.0, true, false}, 0.2);
     if (simulation.has("time_step")) {

@@ -9,7 +9,6 @@
 #include "comminute/core/csv_columns.hpp"
 #include "comminute/core/error.hpp"
 #include "comminute/pbm/population_split.hpp"
-#include "comminute/pbm/ufrj_mill.hpp"
 
 namespace comminute::io {
 
@@ -134,30 +133,10 @@ pbm::SizeGrid read_size_grid(const CaseTable& t) {
   return pbm::SizeGrid(e, coord, k_v);
 }
 
-pbm::CollisionSpectrum read_collision_spectrum(const CaseTable& t, const std::string& key) {
-  const auto path = t.file_path(key);
-  const auto csv = CsvColumns::read(path, t.key_path(key));
-  pbm::CollisionSpectrum s{csv.column("energy_J"), csv.column("frequency_per_s")};
-  for (std::size_t r = 0; r < s.energy.size(); ++r)
-    if (!(s.energy[r] > 0) || s.frequency[r] < 0)
-      throw InputError(path.string(), t.key_path(key), csv.line_of_row(r),
-                       "energy_J must be positive and frequency_per_s not negative");
-  return s;
-}
-
-pbm::FractureEnergyModel read_fracture_energy(const CaseTable& t) {
-  pbm::FractureEnergyModel m;
-  m.e50_inf = t.number("e50_inf", Limits::positive());
-  m.d0 = t.number("d0", Limits::non_negative());
-  m.phi = t.number("phi", Limits::non_negative(), 1.0);
-  m.sigma = t.number("sigma", Limits::positive());
-  m.max_ratio = t.number("max_ratio", {1, 1e300, true, false}, 1e3);
-  return m;
-}
-
-std::unique_ptr<pbm::BreakageFunction> read_breakage(const CaseTable& b, const PbmContext& ctx) {
+std::unique_ptr<pbm::BreakageFunction> read_breakage(const CaseTable& b,
+                                                     const pbm::ModelContext& ctx) {
   const auto pops = b.tables("population");
-  if (pops.empty()) return build_named<BreakageFunctionBuilders>(b, "function", ctx);
+  if (pops.empty()) return build_named<pbm::BreakageFunctionRegistry>(b, "function", ctx);
   std::vector<pbm::PopulationSplit::Population> out;
   double last = 0;
   for (std::size_t i = 0; i < pops.size(); ++i) {
@@ -172,39 +151,10 @@ std::unique_ptr<pbm::BreakageFunction> read_breakage(const CaseTable& b, const P
     } else if (pops[i].has("below")) {
       pops[i].fail("below", "the last population takes every larger parent: no 'below' here");
     }
-    out.push_back({upper, build_named<BreakageFunctionBuilders>(pops[i], "function", ctx)});
+    out.push_back({upper, build_named<pbm::BreakageFunctionRegistry>(pops[i], "function", ctx)});
   }
   return std::make_unique<pbm::PopulationSplit>(std::move(out));
 }
-
-namespace {
-std::pair<std::shared_ptr<const pbm::UfrjMill>, pbm::CollisionSpectrum> read_ufrj_mill(
-    const CaseTable& t, const PbmContext& ctx) {
-  pbm::UfrjParameters u;
-  u.spectrum = read_collision_spectrum(t, "spectrum_file");
-  u.holdup = t.number("holdup", Limits::positive());
-  u.energy_share = t.number("energy_share", {0, 1, true, false}, 1.0);
-  if (t.has("capture_radius"))
-    u.capture_radius = t.number("capture_radius", Limits::positive());
-  else
-    u.ball_radius = 0.5 * t.number("ball_diameter", Limits::positive());
-  u.fracture = read_fracture_energy(t.table("fracture_energy"));
-  u.damage_gamma = t.number("damage_gamma", Limits::positive(), 5.0);
-  u.energy_bins = static_cast<std::size_t>(t.integer("energy_bins", 4, 10000, 60));
-  const CaseTable pr = t.table("progeny");
-  u.t10_A = pr.number("A", {0, 100, true, false});
-  u.t10_b = pr.number("b", Limits::positive());
-  for (const char* key : {"alpha", "beta"}) {
-    const auto v = pr.numbers(key, Limits::positive());
-    if (v.size() != 5)
-      pr.fail(key, fmt::format("give 5 values (n = 2, 4, 25, 50, 75), got {}", v.size()));
-    std::copy(v.begin(), v.end(), (key[0] == 'a' ? u.family.alpha : u.family.beta).begin());
-  }
-  auto spectrum = u.spectrum;
-  return {std::make_shared<pbm::UfrjMill>(ctx.grid, ctx.density, std::move(u)),
-          std::move(spectrum)};
-}
-}  // namespace
 
 pbm::Problem read_pbm_problem(const CaseTable& root) {
   const auto material = root.optional_table("material");
@@ -212,7 +162,7 @@ pbm::Problem read_pbm_problem(const CaseTable& root) {
       material ? material->number("density", Limits::positive(), 1000.0) : 1000.0;
   pbm::Problem p(read_size_grid(root.table("grid")));
   p.density = density;
-  const PbmContext ctx{p.grid, density};
+  const pbm::ModelContext ctx{p.grid, density};
 
   const CaseTable init = root.table("initial");
   const auto basis = init.choice("basis", {"mass", "volume", "number"}, "mass");
@@ -226,16 +176,17 @@ pbm::Problem read_pbm_problem(const CaseTable& root) {
   }
 
   const CaseTable s = root.table("solver");
-  const std::string method = s.choice("method", {"classes", "batch_grinding", "ufrj"}, "classes");
+  std::vector<std::string> methods = {"classes", "batch_grinding"};
+  for (const auto& m : pbm::MillRegistry::names()) methods.push_back(m);
+  const std::string method = s.choice("method", methods, "classes");
   p.method = method == "classes"          ? pbm::Method::classes
              : method == "batch_grinding" ? pbm::Method::batch_grinding
-                                          : pbm::Method::ufrj;
-  if (p.method == pbm::Method::ufrj) {
-    auto [mill, spectrum] = read_ufrj_mill(root.table("mill"), ctx);
-    p.mill = std::move(mill);
-    p.mill_spectrum = std::move(spectrum);
+                                          : pbm::Method::mill;
+  if (p.method == pbm::Method::mill) {
+    p.mill = pbm::MillRegistry::create(method, root.table("mill"), ctx);
+    p.mill_spectrum = p.mill->spectrum();
   } else {
-    p.rate = build_named<SelectionFunctionBuilders>(root.table("rate"), "model", ctx);
+    p.rate = build_named<pbm::SelectionFunctionRegistry>(root.table("rate"), "model", ctx);
     p.function = read_breakage(root.table("breakage"), ctx);
   }
   p.kumar_correction = s.boolean("kumar_correction", true);

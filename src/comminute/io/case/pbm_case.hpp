@@ -1,38 +1,25 @@
 #pragma once
-// Builds a population-balance run (pbm::Problem) from a case file. Model families are picked by
-// name through registries that the model builder files fill:
-//   [breakage] function = "diemer_olson" | "austin" | "t10" | "tabulated"   (pbm_breakage_builders)
-//   [rate]     model = "power_law" | "stress" | "capece" | ...             (pbm_rate_builders)
+// Builds a population-balance run (pbm::Problem) from a case file. Each model family is a registry
+// that the models' own files fill; this reader only picks a model by name and passes its table:
+//   [breakage] function = "<name>"   pbm::BreakageFunctionRegistry
+//   [rate]     model = "<name>"      pbm::SelectionFunctionRegistry
+//   [solver]   method = "<mill>"     pbm::MillRegistry (keys in [mill]); or "classes",
+//                                    "batch_grinding" with [rate] and [breakage]
 // Every key, its unit and default: docs/pbm.md.
 #include <filesystem>
 #include <memory>
 
 #include "comminute/core/case_table.hpp"
-#include "comminute/core/registry.hpp"
 #include "comminute/pbm/breakage_function.hpp"
-#include "comminute/pbm/collision_spectrum.hpp"
-#include "comminute/pbm/critical_stress.hpp"
-#include "comminute/pbm/fracture_energy.hpp"
+#include "comminute/pbm/model_context.hpp"
 #include "comminute/pbm/problem.hpp"
 #include "comminute/pbm/selection_function.hpp"
 
 namespace comminute::io {
 
-// What a model builder may need besides its own table.
-struct PbmContext {
-  const pbm::SizeGrid& grid;
-  double density;  // kg/m³
-};
-
-using BreakageFunctionBuilders =
-    Registry<pbm::BreakageFunction, const CaseTable&, const PbmContext&>;
-using SelectionFunctionBuilders =
-    Registry<pbm::SelectionFunction, const CaseTable&, const PbmContext&>;
-using CriticalStressBuilders = Registry<pbm::CriticalStress, const CaseTable&>;
-
 // Creates by name from the table's `key`, failing with the list of known names.
 template <class R>
-auto build_named(const CaseTable& t, const std::string& key, const PbmContext& ctx) {
+auto build_named(const CaseTable& t, const std::string& key, const pbm::ModelContext& ctx) {
   const std::string name = t.choice(key, R::names());
   return R::create(name, t, ctx);
 }
@@ -43,13 +30,9 @@ struct PbmOutput {
 };
 
 pbm::SizeGrid read_size_grid(const CaseTable& grid);
-// CSV named by `key` with columns energy_J, frequency_per_s.
-pbm::CollisionSpectrum read_collision_spectrum(const CaseTable& t, const std::string& key);
-// e50_inf (J/kg), d0 (m), phi, sigma, max_ratio.
-pbm::FractureEnergyModel read_fracture_energy(const CaseTable& t);
 // [breakage]: one function, or [[breakage.population]] tables split by parent size.
 std::unique_ptr<pbm::BreakageFunction> read_breakage(const CaseTable& breakage,
-                                                     const PbmContext& ctx);
+                                                     const pbm::ModelContext& ctx);
 // Reads [material], [grid], [initial], [rate], [breakage], [solver]. Leaves unknown-key
 // rejection to the caller (a calibration case has more tables).
 pbm::Problem read_pbm_problem(const CaseTable& root);

@@ -1,13 +1,13 @@
-#include "comminute/breakage/progeny/progeny_distribution.hpp"
+#include "comminute/fracture/progeny_distribution.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace comminute::breakage {
+namespace comminute::fracture {
 
 ProgenyDistribution::ProgenyDistribution(double d, double t10, const std::array<double, 5>& tn)
     : d_(d) {
-  // Ascending in size: d/75, d/50, d/25, d/10, d/4, d/2, d.
+  // docs/models.md eq. P3. Ascending in size: d/75, d/50, d/25, d/10, d/4, d/2, d.
   const double n[] = {75, 50, 25, 10, 4, 2, 1};
   const double p[] = {tn[4], tn[3], tn[2], t10, tn[1], tn[0], 100.0};
   double floor_value = 0.0;
@@ -50,4 +50,4 @@ double ProgenyDistribution::passing(double x) const {
   return h00 * p_[k] + h10 * h * slope_[k] + h01 * p_[k + 1] + h11 * h * slope_[k + 1];
 }
 
-}  // namespace comminute::breakage
+}  // namespace comminute::fracture

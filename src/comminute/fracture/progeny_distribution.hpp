@@ -1,12 +1,14 @@
 #pragma once
-// The cumulative progeny size distribution of one breakage event (MODELS.md "Progeny"): mass %
+// The cumulative progeny size distribution of one breakage event (docs/models.md eq. P3): mass %
 // passing size x for a parent of diameter d, through the points (d/n, t_n) with t_1 = 100 and
 // t_10, interpolated monotonically (PCHIP, Fritsch & Carlson 1980) in (ln x, P), and extrapolated
 // below d/75 by the power law through (d/50, t_50) and (d/75, t_75).
+// One implementation for DEM breakage (fragment sizes of an event) and the population balance
+// (the t10 breakage function and the UFRJ mill evaluate it at d = 1 against d/D).
 #include <array>
 #include <vector>
 
-namespace comminute::breakage {
+namespace comminute::fracture {
 
 class ProgenyDistribution {
  public:
@@ -23,4 +25,4 @@ class ProgenyDistribution {
   double tail_exponent_ = 0;           // P = t75 (x/(d/75))^m below d/75
 };
 
-}  // namespace comminute::breakage
+}  // namespace comminute::fracture

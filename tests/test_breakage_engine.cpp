@@ -194,16 +194,7 @@ namespace {
 // The gas set-up of test 3, small; `seed` jitters the lattice and the starting velocities.
 std::unique_ptr<Simulation> small_gas(breakage::BreakageModule** module,
                                       double min_breakable = 0.0012, std::uint64_t seed = 29) {
-  DemSetup s;
-  s.youngs = 5e7;
-  s.restitution = 0.8;
-  s.friction = 0.3;
-  auto sim = make_simulation(s);
-  Rng rng(seed);
-  const double d = 0.003, a = 0.0036, L = 6 * a;
-  lattice(*sim, d, a, L, 3.0, rng);
-  sim->walls.push_back(
-      std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{L, L, L}, std::array<bool, 6>{}));
+  auto sim = box_gas(0.3, seed);
   std::vector<std::optional<breakage::MaterialBreakage>> mats;
   mats.emplace_back(weak_material(0.02, 0.3, min_breakable, 0.3, breakage::FinesRule::mass, 0.2));
   auto mod =
@@ -308,16 +299,7 @@ namespace {
 // the same simulated time in the small gas (no friction, so no non-conservative Mindlin spring),
 // with the time step divided by `refine`; also the energy breakage moved through the ledger.
 std::pair<double, double> gas_balance_drift(int refine) {
-  DemSetup s;
-  s.youngs = 5e7;
-  s.restitution = 0.8;
-  s.friction = 0.0;
-  auto sim = make_simulation(s);
-  Rng rng(29);
-  const double d = 0.003, a = 0.0036, L = 6 * a;
-  lattice(*sim, d, a, L, 3.0, rng);
-  sim->walls.push_back(
-      std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{L, L, L}, std::array<bool, 6>{}));
+  auto sim = box_gas(0.0, 29);
   std::vector<std::optional<breakage::MaterialBreakage>> mats;
   mats.emplace_back(weak_material(0.02, 0.3, 0.0012, 0.3, breakage::FinesRule::mass, 0.2));
   sim->modules.push_back(

@@ -41,15 +41,7 @@ std::size_t column(const std::vector<std::string>& header, const std::string& na
 
 TEST(BreakageOutputs, TablesHaveUnitsAndAFinalRowAtTheEndTime) {
   const TestDir dir;
-  DemSetup s;
-  s.youngs = 5e7;
-  s.restitution = 0.8;
-  auto sim = make_simulation(s);
-  Rng rng(17);
-  const double d = 0.003, a = 0.0036, L = 6 * a;
-  lattice(*sim, d, a, L, 3.0, rng);
-  sim->walls.push_back(
-      std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{L, L, L}, std::array<bool, 6>{}));
+  auto sim = box_gas(0.0, 17);
   sim->walls.back()->name = "box";
   std::vector<std::optional<breakage::MaterialBreakage>> mats;
   mats.emplace_back(weak_material(0.02, 0.3, 0.0008, 0.45, breakage::FinesRule::mass, 0.5));

@@ -35,12 +35,7 @@ void SizeDistributionObserver::setup(Simulation& sim) {
 }
 
 Cadence SizeDistributionObserver::output_cadence() const {
-  Cadence c;
-  if (interval_ > 0)
-    c.interval = interval_;
-  else
-    c.steps = 2000;
-  return c;
+  return Cadence::interval_or_steps(interval_, 2000);
 }
 
 void SizeDistributionObserver::sample(const Simulation& sim) {

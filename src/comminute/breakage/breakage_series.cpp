@@ -8,12 +8,7 @@
 namespace comminute::breakage {
 
 Cadence BreakageSeries::output_cadence() const {
-  Cadence c;
-  if (interval_ > 0)
-    c.interval = interval_;
-  else
-    c.steps = 1000;
-  return c;
+  return Cadence::interval_or_steps(interval_, 1000);
 }
 
 void BreakageSeries::sample(const Simulation& sim) {

@@ -9,6 +9,15 @@ struct Cadence {
   double interval = 0;      // s
   std::uint64_t steps = 0;  // steps
   bool is_set() const { return interval > 0 || steps > 0; }
+  // Every `seconds` when positive, else every `default_steps` steps.
+  static Cadence interval_or_steps(double seconds, std::uint64_t default_steps) {
+    Cadence c;
+    if (seconds > 0)
+      c.interval = seconds;
+    else
+      c.steps = default_steps;
+    return c;
+  }
 };
 
 }  // namespace comminute

@@ -1,6 +1,6 @@
 // Issue 2, test 1: head-on impacts of two spheres and of a sphere on a wall, linear and Hertz.
 // The measured restitution must equal the input within 1 %; the undamped Hertz contact lasts
-// t_c = 2.868 (m*^2 / (R* E*^2 v))^(1/5) (MODELS.md) within 2 %.
+// t_c = 2.868 (m*^2 / (R* E*^2 v))^(1/5) (Johnson, Contact Mechanics, 1985, sec. 11.4) within 2 %.
 #include <gtest/gtest.h>
 
 #include <cmath>

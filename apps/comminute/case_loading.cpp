@@ -11,6 +11,7 @@ LoadedCase load_dem_case(const std::filesystem::path& path) {
   io::OutputOptions output = output_table ? io::read_output_options(*output_table)
                                           : io::default_output_options(file.path());
   io::add_breakage(file.root(), dem);
+  io::decide_time_step(dem);
   file.reject_unknown();
   return {std::move(file), std::move(dem), std::move(output)};
 }

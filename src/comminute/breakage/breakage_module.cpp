@@ -12,6 +12,7 @@
 #include "comminute/core/parallel.hpp"
 #include "comminute/core/units.hpp"
 #include "comminute/engine/simulation.hpp"
+#include "comminute/engine/time_step_policy.hpp"
 #include "comminute/fracture/energy_share.hpp"
 
 namespace comminute::breakage {
@@ -547,6 +548,20 @@ void BreakageModule::load(const Archive& a) {
   removed_ = a.get_value<double>("breakage/removed");
   created_ = a.get_value<double>("breakage/created");
   series_.load(a);
+}
+
+void BreakageModule::announce_sizes(std::vector<ParticleSize>& sizes, const Simulation& sim) const {
+  for (std::size_t k = 0; k < materials_.size(); ++k) {
+    if (!materials_[k]) continue;
+    const double d =
+        std::max(materials_[k]->min_fragment_size,
+                 materials_[k]->min_fragment_ratio * materials_[k]->min_breakable_size);
+    const auto m = static_cast<std::uint16_t>(k);
+    sizes.push_back({0.5 * d, m,
+                     fmt::format("the smallest fragment ({:.4g} m) material '{}' can produce", d,
+                                 sim.materials.material(m).name),
+                     true});
+  }
 }
 
 void BreakageModule::restored(Simulation& sim) {

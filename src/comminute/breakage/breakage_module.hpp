@@ -95,6 +95,10 @@ class BreakageModule final : public Module {
   void save(Archive& a) const override;
   void load(const Archive& a) override;
   void restored(Simulation& sim) override;
+  // Fragments are smaller than the inserted particles: the time step must resolve the smallest
+  // one each material can produce, max(min_fragment_size, min_fragment_ratio x
+  // min_breakable_size).
+  void announce_sizes(std::vector<ParticleSize>& sizes, const Simulation& sim) const override;
   // Event log, ledger and model curves (breakage_series.hpp), written by the output module.
   SeriesSource* series_source() override { return &series_; }
 

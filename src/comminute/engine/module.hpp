@@ -6,6 +6,7 @@
 // A module that inserts or removes particles calls Simulation::particles_changed() so that the
 // neighbour list is rebuilt (contact history survives: it is keyed by particle ids).
 #include <string>
+#include <vector>
 
 #include "comminute/core/archive.hpp"
 
@@ -14,6 +15,7 @@ namespace comminute {
 class Simulation;
 class ContactPipeline;
 class SeriesSource;
+struct ParticleSize;
 
 // Where a module runs within each hook of a step. Modules run stage by stage in this order; within
 // a stage, in the order they were added.
@@ -39,6 +41,8 @@ class Module {
   // Checkpoint: put/get the module's state under names prefixed with name() + "/".
   virtual void save(Archive&) const {}
   virtual void load(const Archive&) {}
+  // Adds the particle sizes the module can create, for the time-step policy (before set-up).
+  virtual void announce_sizes(std::vector<ParticleSize>&, const Simulation&) const {}
   // After a checkpoint was read (every module loaded; setup() is not called again).
   virtual void restored(Simulation&) {}
   // The tables this module offers to the outputs (series_source.hpp), or null.

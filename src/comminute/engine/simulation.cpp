@@ -37,18 +37,6 @@ void Simulation::setup() {
   compute_forces();
 }
 
-double Simulation::rayleigh_time() const {
-  double tr = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < particles.size(); ++i) {
-    const Material& m = materials.material(particles.material[i]);
-    const double rho = particles.mass[i] / (4.0 / 3.0 * M_PI * std::pow(particles.radius[i], 3));
-    const double t = M_PI * particles.radius[i] * std::sqrt(rho / m.shear_modulus()) /
-                     (0.1631 * m.poisson_ratio + 0.8766);
-    tr = std::min(tr, t);
-  }
-  return tr;
-}
-
 void Simulation::run(std::uint64_t n) {
   for (std::uint64_t s = 0; s < n; ++s) step();
 }

@@ -91,8 +91,6 @@ class Simulation {
   // The contact model (law, rolling, adhesion, loading record), assembled at setup or load.
   const ContactPipeline& contacts() const { return contacts_; }
   Observables observe() const;
-  // Smallest Rayleigh time over the particles (s): pi R sqrt(rho/G) / (0.1631 nu + 0.8766).
-  double rayleigh_time() const;
   std::uint64_t neighbor_rebuilds() const { return tracker_.rebuilds(); }
 
   void save(Archive& a) const;

@@ -6,7 +6,6 @@
 
 #include "comminute/analysis/size_distribution_observer.hpp"
 #include "comminute/core/error.hpp"
-#include "comminute/fracture/rayleigh_time.hpp"
 
 namespace comminute::io {
 
@@ -73,32 +72,6 @@ breakage::BreakageModule* add_breakage(const CaseTable& root, DemCase& dem) {
     psd_interval = g->number("size_distribution_interval", Limits::non_negative(), 0.0);
     if (g->has("sieves")) sieves.sieves = g->numbers("sieves", Limits::positive());
     sieves.bottom = g->number("sieve_bottom", Limits::non_negative(), 0.0);
-  }
-  // Fragments are smaller than the inserted particles: the time step must resolve the smallest
-  // one breakage can create, max(min_fragment_size, min_fragment_ratio x min_breakable_size).
-  const CaseTable simulation = root.table("simulation");
-  for (std::size_t k = 0; k < mats.size(); ++k) {
-    if (!mats[k]) continue;
-    const double d = std::max(mats[k]->min_fragment_size,
-                              mats[k]->min_fragment_ratio * mats[k]->min_breakable_size);
-    const Material& m = sim.materials.material(static_cast<std::uint16_t>(k));
-    const double t_rayleigh =
-        fracture::rayleigh_time(d, m.density, m.shear_modulus(), m.poisson_ratio);
-    const double fraction =
-        simulation.number("time_step_fraction", Limits{0.0, 1.0, true, false}, 0.2);
-    if (simulation.has("time_step")) {
-      if (sim.dt > 0.3 * t_rayleigh)
-        simulation.fail("time_step",
-                        fmt::format("{:.4g} s is {:.0f} % of the Rayleigh time {:.4g} s of the "
-                                    "smallest fragment ({:.4g} m) material '{}' can produce",
-                                    sim.dt, 100 * sim.dt / t_rayleigh, t_rayleigh, d, m.name));
-    } else if (fraction * t_rayleigh < sim.dt) {
-      sim.dt = fraction * t_rayleigh;
-      dem.time_step_note += fmt::format(
-          "; lowered to {:.4g} s = {:.0f} % of the Rayleigh time of the smallest fragment "
-          "({:.4g} m) material '{}' can produce",
-          sim.dt, 100 * fraction, d, m.name);
-    }
   }
   auto module = std::make_unique<breakage::BreakageModule>(std::move(mats), opt);
   module->register_fields(sim.particles);

@@ -12,8 +12,8 @@ namespace comminute::io {
 // When at least one material has a breakage table, appends a BreakageModule (and a size
 // distribution observer; both offer their tables to the output module) to sim.modules and
 // returns the module; otherwise returns nullptr. Call after build_dem_case and before
-// CaseFile::reject_unknown(). Lowers the time step for the smallest fragment when the case did not
-// set it (the change is added to dem.time_step_note).
+// decide_time_step() (the module announces its smallest fragment to the time-step policy) and
+// CaseFile::reject_unknown().
 breakage::BreakageModule* add_breakage(const CaseTable& root, DemCase& dem);
 
 }  // namespace comminute::io

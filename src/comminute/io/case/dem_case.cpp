@@ -178,47 +178,25 @@ DemCase build_dem_case(const CaseTable& root) {
 
   const auto inserts = root.tables("insert");
   if (inserts.empty()) root.fail({}, "no particles: add at least one [[insert]] table");
-  // Time step: a fraction of the Rayleigh time of the smallest particle of each inserted material
-  // (MODELS.md); wall materials do not count.
-  double t_rayleigh = std::numeric_limits<double>::infinity();
-  SmallestParticle smallest{std::numeric_limits<double>::infinity(), 0};
+  // the time step resolves the smallest particle of each insertion (wall materials do not count)
+  out.time_step = std::make_unique<TimeStepPolicy>(s);
   for (std::size_t k = 0; k < inserts.size(); ++k) {
     const SmallestParticle sp = read_insertion(inserts[k], k, sim);
-    const Material& mat = sim.materials.material(sp.material);
-    t_rayleigh =
-        std::min(t_rayleigh, units::pi * sp.radius * std::sqrt(mat.density / mat.shear_modulus()) /
-                                 (0.1631 * mat.poisson_ratio + 0.8766));
-    if (sp.radius < smallest.radius) smallest = sp;
+    out.time_step->add({sp.radius, sp.material, fmt::format("insert[{}]", k), false});
   }
-  const double fraction = s.number("time_step_fraction", Limits{0.0, 1.0, true, false}, 0.2);
-  if (s.has("time_step")) {
-    sim.dt = s.number("time_step", kPositive);
-    out.time_step_note =
-        fmt::format("time step {:.4g} s (set) = {:.1f} % of the Rayleigh time {:.4g} s", sim.dt,
-                    100 * sim.dt / t_rayleigh, t_rayleigh);
-    if (sim.dt > 0.3 * t_rayleigh)
-      out.warnings.push_back(fmt::format(
-          "the time step {:.4g} s is {:.0f} % of the Rayleigh time {:.4g} s of the smallest "
-          "particle; above ~30 % contacts are under-resolved and the run may blow up",
-          sim.dt, 100 * sim.dt / t_rayleigh, t_rayleigh));
-  } else {
-    sim.dt = fraction * t_rayleigh;
-    out.time_step_note = fmt::format("time step {:.4g} s = {:.0f} % of the Rayleigh time {:.4g} s",
-                                     sim.dt, 100 * fraction, t_rayleigh);
-  }
-  // the law's own limit for the lightest pair
-  const double mass =
-      sim.materials.material(smallest.material).density * units::sphere_volume(smallest.radius);
-  const StepLimit limit = sim.law->step_limit(
-      sim.materials.pair(smallest.material, smallest.material), smallest.radius, mass);
-  if (sim.dt > limit.dt)
-    out.warnings.push_back(fmt::format("the time step {:.4g} s {}", sim.dt, limit.reason));
   return out;
+}
+
+void decide_time_step(DemCase& c) {
+  TimeStepPolicy::Decision d = c.time_step->decide(*c.sim);
+  c.time_step_note = std::move(d.note);
+  c.warnings.insert(c.warnings.end(), d.warnings.begin(), d.warnings.end());
 }
 
 DemCase load_plain_dem_case(const std::filesystem::path& path) {
   const CaseFile file = CaseFile::load(path);
   DemCase c = build_dem_case(file.root());
+  decide_time_step(c);
   file.reject_unknown();
   return c;
 }

@@ -9,17 +9,22 @@
 
 #include "comminute/core/case_table.hpp"
 #include "comminute/engine/simulation.hpp"
+#include "comminute/engine/time_step_policy.hpp"
 
 namespace comminute::io {
 
 struct DemCase {
   std::unique_ptr<Simulation> sim;
-  double end_time = 0;         // s
-  std::string time_step_note;  // how the step was chosen, for the log
+  double end_time = 0;                        // s
+  std::unique_ptr<TimeStepPolicy> time_step;  // knows the inserted sizes
+  std::string time_step_note;                 // how the step was chosen, for the log
   std::vector<std::string> warnings;
 };
 
+// Builds everything but the time step: modules (breakage) may still be added.
 DemCase build_dem_case(const CaseTable& root);
+// Sets the time step once, when every module is in (TimeStepPolicy).
+void decide_time_step(DemCase& c);
 
 // Loads a case file that holds only DEM tables (benchmarks, tools): builds it and rejects unknown
 // keys. `comminute run` reads more tables ([output], breakage) and does its own loading.

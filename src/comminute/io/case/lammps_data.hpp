@@ -1,7 +1,7 @@
 #pragma once
 // Reads spheres from a LAMMPS-style granular data file ("Atoms" lines `id type diameter density
-// x y z`, optional "Velocities" lines `id vx vy vz wx wy wz`), the format of the peer benchmark
-// inputs in shared/bench/peers/data.
+// x y z`, optional "Velocities" lines `id vx vy vz wx wy wz`), the format LIGGGHTS and LAMMPS read
+// (atom_style sphere), used by the benchmarks to give every code the same initial state.
 #include <filesystem>
 #include <vector>
 

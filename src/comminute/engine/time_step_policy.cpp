@@ -1,0 +1,71 @@
+#include "comminute/engine/time_step_policy.hpp"
+
+#include <fmt/format.h>
+
+#include <limits>
+
+#include "comminute/core/units.hpp"
+#include "comminute/engine/simulation.hpp"
+#include "comminute/fracture/rayleigh_time.hpp"
+
+namespace comminute {
+
+TimeStepPolicy::TimeStepPolicy(const CaseTable& simulation) : table_(simulation) {
+  fraction_ = simulation.number("time_step_fraction", Limits{0.0, 1.0, true, false}, 0.2);
+  if (simulation.has("time_step")) given_ = simulation.number("time_step", Limits::positive());
+}
+
+TimeStepPolicy::Decision TimeStepPolicy::decide(Simulation& sim) const {
+  std::vector<ParticleSize> sizes = sizes_;
+  for (const auto& m : sim.modules) m->announce_sizes(sizes, sim);
+  const auto rayleigh = [&sim](const ParticleSize& s) {
+    const Material& m = sim.materials.material(s.material);
+    return fracture::rayleigh_time(2 * s.radius, m.density, m.shear_modulus(), m.poisson_ratio);
+  };
+  // the smallest Rayleigh time of the inserted particles, and the lightest inserted particle
+  double t_inserted = std::numeric_limits<double>::infinity();
+  const ParticleSize* lightest = nullptr;
+  for (const auto& s : sizes)
+    if (!s.announced) {
+      t_inserted = std::min(t_inserted, rayleigh(s));
+      if (lightest == nullptr || s.radius < lightest->radius) lightest = &s;
+    }
+  Decision d;
+  if (given_ > 0) {
+    d.dt = given_;
+    d.note = fmt::format("time step {:.4g} s (set) = {:.1f} % of the Rayleigh time {:.4g} s", d.dt,
+                         100 * d.dt / t_inserted, t_inserted);
+    if (d.dt > 0.3 * t_inserted)
+      d.warnings.push_back(fmt::format(
+          "the time step {:.4g} s is {:.0f} % of the Rayleigh time {:.4g} s of the smallest "
+          "particle; above ~30 % contacts are under-resolved and the run may blow up",
+          d.dt, 100 * d.dt / t_inserted, t_inserted));
+    for (const auto& s : sizes)
+      if (s.announced && d.dt > 0.3 * rayleigh(s))
+        table_.fail("time_step", fmt::format("{:.4g} s is {:.0f} % of the Rayleigh time {:.4g} s "
+                                             "of {}",
+                                             d.dt, 100 * d.dt / rayleigh(s), rayleigh(s), s.what));
+  } else {
+    d.dt = fraction_ * t_inserted;
+    d.note = fmt::format("time step {:.4g} s = {:.0f} % of the Rayleigh time {:.4g} s", d.dt,
+                         100 * fraction_, t_inserted);
+    for (const auto& s : sizes)
+      if (s.announced && fraction_ * rayleigh(s) < d.dt) {
+        d.dt = fraction_ * rayleigh(s);
+        d.note += fmt::format("; lowered to {:.4g} s = {:.0f} % of the Rayleigh time of {}", d.dt,
+                              100 * fraction_, s.what);
+      }
+  }
+  if (lightest != nullptr) {  // the law's own limit for the lightest pair
+    const Material& m = sim.materials.material(lightest->material);
+    const StepLimit limit =
+        sim.law->step_limit(sim.materials.pair(lightest->material, lightest->material),
+                            lightest->radius, m.density * units::sphere_volume(lightest->radius));
+    if (d.dt > limit.dt)
+      d.warnings.push_back(fmt::format("the time step {:.4g} s {}", d.dt, limit.reason));
+  }
+  sim.dt = d.dt;
+  return d;
+}
+
+}  // namespace comminute

@@ -1,4 +1,5 @@
-// Constant directional torque rolling resistance (Ai et al. 2011, model A):
+// Constant directional torque rolling resistance (Ai, Chen, Rotter & Ooi, Powder Technol. 206
+// (2011) 269, model A):
 // M_r = -mu_r R* |F_n| w_rel/|w_rel|, with w_rel the relative rolling angular velocity. The torque
 // is capped at I* |w_rel| / dt so that it stops the relative rolling within a step instead of
 // reversing it (the chatter of model A at rest).

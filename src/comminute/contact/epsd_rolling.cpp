@@ -1,4 +1,5 @@
-// Elastic–plastic spring–dashpot rolling resistance (Ai et al. 2011, model C; Iwashita & Oda):
+// Elastic–plastic spring–dashpot rolling resistance (Ai, Chen, Rotter & Ooi, Powder Technol. 206
+// (2011) 269, model C; Iwashita & Oda, J. Eng. Mech. 124 (1998) 285):
 // k_r = 2.25 k_n mu_r^2 R*^2, dM = -k_r w_rel dt, |M| <= mu_r R* |F_n| (full mobilisation, no
 // damping), viscous part -C_r w_rel with C_r = eta_r 2 sqrt(I_r k_r), I_r = m* R*^2 (eta_r from
 // [pair] rolling_damping). The spring torque is kept in the contact's slot "rolling_spring" (N m).

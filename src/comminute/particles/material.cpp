@@ -34,6 +34,8 @@ void MaterialTable::rebuild_pair(std::uint16_t a, std::uint16_t b, const PairInp
   PairParameters q;
   static_cast<PairInput&>(q) = p;
   const double v1 = m1.poisson_ratio, v2 = m2.poisson_ratio;
+  // 1/E* = (1-ν1²)/E1 + (1-ν2²)/E2, 1/G* = 2(2-ν1)(1+ν1)/E1 + 2(2-ν2)(1+ν2)/E2 (Johnson, Contact
+  // Mechanics, Cambridge UP 1985, ch. 4 and 7; the LIGGGHTS/EDEM convention for G*)
   q.effective_modulus =
       1.0 / ((1 - v1 * v1) / m1.youngs_modulus + (1 - v2 * v2) / m2.youngs_modulus);
   q.effective_shear_modulus = 1.0 / (2 * (2 - v1) * (1 + v1) / m1.youngs_modulus +

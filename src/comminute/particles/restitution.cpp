@@ -6,12 +6,16 @@
 
 namespace comminute {
 
+// β = ln e / sqrt(ln² e + π²): the linear oscillator's damping ratio for restitution e (Tsuji,
+// Tanaka & Ishida, Powder Technol. 71 (1992) 239; docs/models.md "Contact laws").
 double damping_beta(double restitution) {
   if (restitution >= 1.0) return 0.0;
   const double l = std::log(restitution);
   return l / std::sqrt(l * l + units::pi * units::pi);
 }
 
+// Non-dimensional Hertz impact with Tsuji-type damping (Tsuji, Tanaka & Ishida, Powder Technol.
+// 71 (1992) 239), integrated by RK4; verifies beta(e) (see the header).
 double hertz_restitution(double beta) {
   const double c = std::sqrt(5.0) * std::abs(beta);
   auto acc = [c](double x, double v) {

@@ -42,7 +42,7 @@ l=$(line_of '^open = ')
 expect "case.toml:$l: key 'walls[0].open': unknown face \"top\"" 's/^open = \["+z"\]/open = ["top"]/'
 expect "TOML syntax error" 's/^friction = 0.5/friction = = 0.5/'
 expect "key 'insert[0].file'" 's/^type = "fill"/type = "data_file"\nfile = 3/'
-expect "no-such.data: cannot open the data file" 's/^type = "fill"/type = "data_file"\nfile = "no-such.data"/'
+expect "key 'insert[0].file': no such file" 's/^type = "fill"/type = "data_file"\nfile = "no-such.data"/'
 l=$(line_of '^rolling_friction')
 expect "case.toml:$l: key 'interaction.rolling_fricton': unknown key (did you mean 'rolling_friction'?)" 's/^rolling_friction = 0.05/rolling_fricton = 0.05/'
 [ $status -eq 0 ] && echo "ok: $count bad DEM case files rejected with exit 2, file:line, key path and value"

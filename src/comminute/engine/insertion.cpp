@@ -156,10 +156,15 @@ void InsertionModule::save(Archive& a) const {
 void InsertionModule::load(const Archive& a) {
   auto s = a.get<std::uint64_t>(name() + "/rng");
   Rng::State st{};
+  if (s.size() != st.size())
+    throw Error(fmt::format("checkpoint entry '{}/rng' holds {} words, a generator state {}",
+                            name(), s.size(), st.size()));
   std::copy(s.begin(), s.end(), st.begin());
   rng_.set_state(st);
   inserted_ = a.get_value<std::uint64_t>(name() + "/inserted");
   next_time_ = a.get_value<double>(name() + "/next_time");
+  if (!std::isfinite(next_time_))
+    throw Error(fmt::format("checkpoint entry '{}/next_time' is not finite", name()));
 }
 
 }  // namespace comminute

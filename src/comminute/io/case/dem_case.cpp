@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "comminute/core/error.hpp"
+#include "comminute/core/memory.hpp"
 #include "comminute/core/units.hpp"
 #include "comminute/engine/insertion.hpp"
 #include "comminute/io/case/lammps_data.hpp"
@@ -149,7 +150,7 @@ SmallestParticle read_insertion(const CaseTable& t, std::size_t index, Simulatio
   const std::string type = t.choice("type", {"fill", "pour", "data_file"});
   const std::uint16_t mat = material_index(t, "material", sim);
   if (type == "data_file") {
-    auto particles = read_lammps_data(t.file_path("file"));
+    auto particles = read_lammps_data(t.input_file("file"), t.key_path("file"));
     double rmin = std::numeric_limits<double>::infinity();
     for (auto& p : particles) {
       p.material = mat;
@@ -178,12 +179,55 @@ SmallestParticle read_insertion(const CaseTable& t, std::size_t index, Simulatio
     const bool has_count = t.has("count"), has_fraction = t.has("volume_fraction");
     if (has_count == has_fraction) t.fail({}, "give exactly one of 'count' or 'volume_fraction'");
     if (has_count) s.count = static_cast<std::uint64_t>(t.integer("count", 1, 1'000'000'000));
+    // particles, neighbour list and contact state: about 1 kB per particle
+    if (exceeds_memory(1024.0 * static_cast<double>(s.count)))
+      t.fail("count", fmt::format("{} particles need about {:.3g} GB, more than this machine's "
+                                  "{:.3g} GB",
+                                  s.count, 1024.0 * static_cast<double>(s.count) / 1e9,
+                                  physical_memory_bytes() / 1e9));
     if (has_fraction)
       s.volume_fraction = t.number("volume_fraction", Limits{0.0, 0.5, true, false});
   }
   const double rmin = 0.5 * s.size->min_diameter();
   sim.modules.push_back(std::make_unique<InsertionModule>(std::move(s), sim.seed));
   return {rmin, mat};
+}
+
+}  // namespace
+
+namespace {
+
+// More steps than this is a mistake (a time step in the wrong unit, an end time in ms): at 10^6
+// particle-steps/s a run of one particle would take 10^3 s per 10^9 steps; docs/case-file.md.
+constexpr double max_dem_steps = 1e9;
+
+// The run must take at least one step and a countable number of them (max_dem_steps).
+void check_steps(const CaseTable& s, double end_time, double dt) {
+  const std::string key = s.has("time_step") ? "time_step" : "end_time";
+  if (!(dt > 0) || !std::isfinite(dt)) s.fail(key, fmt::format("time step {:.4g} s", dt));
+  if (dt > end_time)
+    s.fail(key, fmt::format("the time step {:.4g} s exceeds the end time {:.4g} s: the run would "
+                            "take no step",
+                            dt, end_time));
+  if (end_time / dt > max_dem_steps)
+    s.fail(key, fmt::format("end time {:.4g} s / time step {:.4g} s = {:.3g} steps, more than the "
+                            "limit of {:.0e} steps",
+                            end_time, dt, end_time / dt, max_dem_steps));
+}
+
+// Wall names become column names of timeseries.csv: refused here (check) rather than when the
+// output is opened (run).
+void check_wall_names(const std::vector<CaseTable>& tables, const Simulation& sim) {
+  for (std::size_t k = 0; k < sim.walls.size() && k < tables.size(); ++k) {
+    const std::string& n = sim.walls[k]->name;
+    if (n.empty() || n.find_first_of(",\"\r\n[]") != std::string::npos)
+      tables[k].fail("name", fmt::format("wall name '{}' cannot name a CSV column (empty, or "
+                                         "holds a comma, quote, bracket or line break)",
+                                         n));
+    for (std::size_t j = 0; j < k; ++j)
+      if (sim.walls[j]->name == n)
+        tables[k].fail("name", fmt::format("two walls are named '{}'; names must differ", n));
+  }
 }
 
 }  // namespace
@@ -236,6 +280,8 @@ DemCase build_dem_case(const CaseTable& root) {
     out.time_step_note = fmt::format("time step {:.4g} s = {:.0f} % of the Rayleigh time {:.4g} s",
                                      sim.dt, 100 * fraction, t_rayleigh);
   }
+  check_steps(s, out.end_time, sim.dt);
+  check_wall_names(walls, sim);
   // the law's own limit for the lightest pair
   const double mass =
       sim.materials.material(smallest.material).density * units::sphere_volume(smallest.radius);

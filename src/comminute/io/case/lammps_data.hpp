@@ -3,12 +3,15 @@
 // x y z`, optional "Velocities" lines `id vx vy vz wx wy wz`), the format of the peer benchmark
 // inputs in shared/bench/peers/data.
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "comminute/particles/particle_store.hpp"
 
 namespace comminute::io {
 
-std::vector<ParticleInit> read_lammps_data(const std::filesystem::path& file);
+// `key`: the case key that named the file (for messages).
+std::vector<ParticleInit> read_lammps_data(const std::filesystem::path& file,
+                                           const std::string& key = "");
 
 }  // namespace comminute::io

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <boost/math/special_functions/erf.hpp>
 #include <cmath>
+#include <limits>
 
 #include "comminute/core/csv_columns.hpp"
 #include "comminute/core/error.hpp"
+#include "comminute/core/memory.hpp"
 #include "comminute/pbm/population_split.hpp"
 #include "comminute/pbm/ufrj_mill.hpp"
 
@@ -23,7 +25,14 @@ pbm::GridCoordinate coordinate(const CaseTable& t) {
 }
 
 std::size_t classes(const CaseTable& t) {
-  return static_cast<std::size_t>(t.integer("classes", 1, 100000));
+  const auto n = static_cast<std::size_t>(t.integer("classes", 1, 100000));
+  // the solvers hold a few n x n matrices of doubles (breakage, its transform, work arrays)
+  const double bytes = 4.0 * 8.0 * static_cast<double>(n) * static_cast<double>(n);
+  if (exceeds_memory(bytes))
+    t.fail("classes", fmt::format("{} classes need about {:.3g} GB ({} x {} matrices), more than "
+                                  "this machine's {:.3g} GB",
+                                  n, bytes / 1e9, n, n, physical_memory_bytes() / 1e9));
+  return n;
 }
 
 // Fractions (in the initial table's basis) per class from a cumulative passing curve: linear in
@@ -206,6 +215,28 @@ std::pair<std::shared_ptr<const pbm::UfrjMill>, pbm::CollisionSpectrum> read_ufr
 }
 }  // namespace
 
+namespace {
+// RK4 takes fixed steps: one larger than an output interval would be shortened silently, and a
+// count beyond the adaptive integrator's cap would run for hours.
+void check_rk4_step(const CaseTable& s, const pbm::Problem& p) {
+  const double h = p.integration.time_step;
+  double smallest = std::numeric_limits<double>::infinity(), previous = 0;
+  for (double t : p.times) {
+    if (t > previous) smallest = std::min(smallest, t - previous);
+    previous = t;
+  }
+  if (h > smallest)
+    s.fail("time_step",
+           fmt::format("the RK4 step {} s exceeds the smallest output interval {} s", h, smallest));
+  const double steps = p.times.back() / h;
+  const auto cap = static_cast<double>(p.integration.adaptive.max_steps);
+  if (steps > cap)
+    s.fail("time_step", fmt::format("{} s / {} s = {:.3g} RK4 steps, more than the cap of {} "
+                                    "steps (the adaptive integrator's)",
+                                    p.times.back(), h, steps, cap));
+}
+}  // namespace
+
 pbm::Problem read_pbm_problem(const CaseTable& root) {
   const auto material = root.optional_table("material");
   const double density =
@@ -254,6 +285,7 @@ pbm::Problem read_pbm_problem(const CaseTable& root) {
   for (std::size_t i = 1; i < p.times.size(); ++i)
     if (!(p.times[i] > p.times[i - 1]))
       s.fail("times", fmt::format("times must increase: times[{}] = {} s", i, p.times[i]));
+  if (p.integration.scheme == pbm::Scheme::rk4) check_rk4_step(s, p);
   return p;
 }
 

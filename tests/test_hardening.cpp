@@ -245,3 +245,28 @@ TEST(HardenedCaseText, EmptyPathsAndDirectoriesAreRefused) {
     EXPECT_NE(std::string(e.what()).find("directory"), std::string::npos) << e.what();
   }
 }
+
+TEST(HardenedCheckpoint, AFailedWriteKeepsThePreviousCheckpoint) {
+  const comminute::testing::TestDir dir;
+  const auto path = dir.path() / "checkpoint.h5";
+  Archive a;
+  a.put("x", std::vector<double>{1, 2, 3});
+  io::write_checkpoint(path, a, {});
+  auto slurp = [](const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string{std::istreambuf_iterator<char>(in), {}};
+  };
+  const std::string before = slurp(path);
+  // the temporary file cannot be created (stands in for a full disk or a read-only folder)
+  std::filesystem::create_directories(dir.path() / "checkpoint.h5.part");
+  Archive b;
+  b.put("x", std::vector<double>{4, 5});
+  try {
+    io::write_checkpoint(path, b, {});
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("checkpoint.h5.part"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(slurp(path), before);
+  EXPECT_EQ(io::read_checkpoint(path).get<double>("x").size(), 3u);
+}

@@ -81,4 +81,11 @@ expect "duplicate CSV column" 2 "twice.csv:2: key 'calibration.data[0].file': co
 sed -e 's/^2500,/-2500,/' mixer_contact_frequency.csv > negative.csv
 sed -e 's/"mixer_contact_frequency.csv"/"negative.csv"/' carbon_black.toml > negative.toml
 expect "negative stress" 2 "negative.csv:4: key 'rate.frequency_file': negative stress -2500 Pa" "$bin" pbm --no-plots negative.toml
+
+# --- PBM time steps
+sed -e 's/^integrator = "adaptive"/integrator = "rk4"\ntime_step = 90.0/' batch_grinding.toml > rk4_big.toml
+line=$(grep -n '^time_step' rk4_big.toml | cut -d: -f1)
+expect "RK4 step above the smallest output interval" 2 "rk4_big.toml:$line: key 'solver.time_step': the RK4 step 90 s exceeds the smallest output interval 60 s" "$bin" pbm --no-plots rk4_big.toml
+sed -e 's/^integrator = "adaptive"/integrator = "rk4"\ntime_step = 1e-6/' batch_grinding.toml > rk4_many.toml
+expect "RK4 step count beyond the cap" 2 "RK4 steps, more than the cap of 1000000 steps" "$bin" pbm --no-plots rk4_many.toml
 exit $fail

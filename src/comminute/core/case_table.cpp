@@ -46,10 +46,43 @@ std::string type_name(const toml::node& n) {
   }
 }
 
+// A value as it appears in messages. Not toml++'s printer: in 3.3.0 it has undefined behaviour
+// on arrays holding floats below 1 (it sizes them with an unchecked float->integer conversion).
+void display(const toml::node& n, std::string& out) {
+  if (out.size() > 80) return;
+  if (auto t = n.as_table()) {
+    out += '{';
+    bool first = true;
+    for (const auto& [k, v] : *t) {
+      out += first ? " " : ", ";
+      first = false;
+      out += std::string(k.str()) + " = ";
+      display(v, out);
+    }
+    out += " }";
+  } else if (auto a = n.as_array()) {
+    out += '[';
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      if (i) out += ", ";
+      display(*a->get(i), out);
+    }
+    out += ']';
+  } else if (auto str = n.as_string()) {
+    out += '"' + str->get() + '"';
+  } else if (auto i = n.as_integer()) {
+    out += fmt::format("{}", i->get());
+  } else if (auto f = n.as_floating_point()) {
+    out += fmt::format("{}", f->get());
+  } else if (auto b = n.as_boolean()) {
+    out += b->get() ? "true" : "false";
+  } else {
+    out += "<date/time>";
+  }
+}
+
 std::string show(const toml::node& n) {
-  std::ostringstream s;
-  n.visit([&](auto&& v) { s << v; });
-  std::string out = s.str();
+  std::string out;
+  display(n, out);
   if (out.size() > 60) out = out.substr(0, 57) + "...";
   return out;
 }
@@ -398,6 +431,51 @@ CaseFile CaseFile::parse(std::string_view text, const std::string& name) {
   return f;
 }
 
+namespace {
+
+// A canonical text of a TOML value for fingerprints: keys in name order, numbers in their shortest
+// exact form, strings with their length. (toml++ 3.3.0's own formatter has undefined behaviour on
+// floats below 1, so it is not used.)
+void canonical(const toml::node& n, std::string& out) {
+  if (auto t = n.as_table()) {
+    out += '{';
+    for (const auto& [k, v] : *t) {
+      out += fmt::format("{}:{}=", k.str().size(), k.str());
+      canonical(v, out);
+      out += ';';
+    }
+    out += '}';
+  } else if (auto a = n.as_array()) {
+    out += '[';
+    for (const auto& e : *a) {
+      canonical(e, out);
+      out += ',';
+    }
+    out += ']';
+  } else if (auto str = n.as_string()) {
+    out += fmt::format("s{}:{}", str->get().size(), str->get());
+  } else if (auto i = n.as_integer()) {
+    out += fmt::format("i{}", i->get());
+  } else if (auto f = n.as_floating_point()) {
+    out += fmt::format("f{}", f->get());
+  } else if (auto b = n.as_boolean()) {
+    out += b->get() ? "b1" : "b0";
+  } else if (auto d = n.as_date()) {
+    const toml::date& v = d->get();
+    out += fmt::format("d{}-{}-{}", v.year, v.month, v.day);
+  } else if (auto tm = n.as_time()) {
+    const toml::time& v = tm->get();
+    out += fmt::format("t{}:{}:{}.{}", v.hour, v.minute, v.second, v.nanosecond);
+  } else if (auto dt = n.as_date_time()) {
+    const toml::date_time& v = dt->get();
+    out += fmt::format("D{}-{}-{}T{}:{}:{}.{}Z{}", v.date.year, v.date.month, v.date.day,
+                       v.time.hour, v.time.minute, v.time.second, v.time.nanosecond,
+                       v.offset ? v.offset->minutes : 100000);
+  }
+}
+
+}  // namespace
+
 std::vector<std::pair<std::string, std::string>> CaseFile::fingerprint() const {
   std::vector<std::pair<std::string, std::string>> out;
   auto mix = [](std::uint64_t h, std::string_view bytes) {
@@ -407,19 +485,15 @@ std::vector<std::pair<std::string, std::string>> CaseFile::fingerprint() const {
   for (const auto& [k, v] : state_->doc) {
     const std::string key(k.str());
     if (key == "output") continue;
-    std::ostringstream text;
+    std::string text;
     if (key == "simulation" && v.is_table()) {
       toml::table t = *v.as_table();
       t.erase("end_time");
-      text << toml::toml_formatter(t);
-    } else if (auto t = v.as_table()) {
-      text << toml::toml_formatter(*t);
-    } else if (auto a = v.as_array()) {
-      text << toml::toml_formatter(*a);
+      canonical(t, text);
     } else {
-      v.visit([&](auto&& x) { text << x; });
+      canonical(v, text);
     }
-    std::uint64_t h = mix(0xcbf29ce484222325ull, text.str());
+    std::uint64_t h = mix(0xcbf29ce484222325ull, text);
     for (const auto& [kp, file] : state_->files) {
       if (kp != key && !kp.starts_with(key + ".") && !kp.starts_with(key + "[")) continue;
       std::ifstream in(file, std::ios::binary);

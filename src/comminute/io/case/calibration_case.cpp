@@ -33,6 +33,7 @@ struct DataSet {
 };
 
 toml::table parse_toml(const std::filesystem::path& path) {
+  (void)CaseFile::load(path);  // the text checks (UTF-8, keys) before toml++ parses it directly
   try {
     return toml::parse_file(path.string());
   } catch (const toml::parse_error& e) {

@@ -295,3 +295,15 @@ TEST(HardenedCaseText, TableHeaderThatIsNotAKeyIsASyntaxError) {
   EXPECT_EQ(refusal("a = 1\n[(((b]]\nc = 2\n").line(), 2);
   EXPECT_EQ(refusal("[[ (x]]\n").line(), 1);
 }
+
+// toml++ 3.3.0 reaches __builtin_unreachable classifying many non-ASCII code points outside
+// strings (fixed in 3.4): they are refused before parsing; strings and comments keep them.
+TEST(HardenedCaseText, NonAsciiOutsideStringsAndCommentsIsRefused) {
+  EXPECT_EQ(refusal("a = 1\ng = [0.0, 9.8\xcf\x9b]\n").line(), 2);
+  EXPECT_EQ(refusal("\xc3\xa9 = 1\n").line(), 1);
+  EXPECT_EQ(refusal("a = \"x\\\xc3\xa9\"\n").line(), 1);
+  EXPECT_EQ(refusal("a = \"\"\"x \\\n   \xc3\xa9\"\"\"\n").line(), 1);
+  EXPECT_NO_THROW(
+      CaseFile::parse("# 150 \xc2\xb5m, caf\xc3\xa9\na = \"\xc2\xb5\" # \xcf\x9b\nb = '\xc3\xa9'\n"
+                      "c = \"\"\"\n\xc3\xa9\"\"\"\nd = '''\xcf\x9b'''\ne = \"q\\\"\xc3\xa9\"\n"));
+}

@@ -386,6 +386,81 @@ void check_text(std::string_view text, const std::string& name) {
   }
 }
 
+// toml++ 3.3.0 classifies characters outside strings (whitespace, value ends) with a table that
+// reaches __builtin_unreachable for many code points (U+00A1-U+0499, U+2F3E-U+3337): undefined
+// behaviour, fixed upstream in 3.4. TOML allows non-ASCII text only in strings and comments, so
+// anything else is refused before the parser sees it, as is a non-ASCII character after a
+// backslash in a string (an escape toml++ would classify the same way).
+void check_non_ascii_placement(std::string_view text, const std::string& name) {
+  enum class In { code, comment, basic, literal, ml_basic, ml_literal } in = In::code;
+  long line = 1;
+  auto at = [&](std::size_t i, std::string_view what) {
+    return text.substr(i, what.size()) == what;
+  };
+  auto refuse = [&](const char* what) { throw InputError(name, "", line, what); };
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    const bool non_ascii = (static_cast<unsigned char>(c) & 0x80u) != 0;
+    if (c == '\n') ++line;
+    switch (in) {
+      case In::code:
+        if (non_ascii) refuse("non-ASCII character outside a string or comment");
+        if (c == '#') in = In::comment;
+        if (c == '"') {
+          if (at(i, "\"\"\"")) {
+            in = In::ml_basic;
+            i += 2;
+          } else {
+            in = In::basic;
+          }
+        }
+        if (c == '\'') {
+          if (at(i, "'''")) {
+            in = In::ml_literal;
+            i += 2;
+          } else {
+            in = In::literal;
+          }
+        }
+        break;
+      case In::comment:
+        if (c == '\n') in = In::code;
+        break;
+      case In::basic:
+      case In::ml_basic:
+        if (c == '\\') {
+          // an escape, or a line-ending backslash: the next non-blank character is classified
+          std::size_t j = i + 1;
+          while (in == In::ml_basic && j < text.size() &&
+                 (text[j] == ' ' || text[j] == '\t' || text[j] == '\r' || text[j] == '\n'))
+            ++j;
+          if (j < text.size() && (static_cast<unsigned char>(text[j]) & 0x80u))
+            refuse("non-ASCII character after a backslash in a string");
+          if (j == i + 1 && i + 1 < text.size()) {  // the escaped character
+            if (text[i + 1] == '\n') ++line;
+            ++i;
+          }
+          break;
+        }
+        if (in == In::basic && (c == '"' || c == '\n')) in = In::code;
+        if (in == In::ml_basic && at(i, "\"\"\"")) {
+          while (i + 1 < text.size() && text[i + 1] == '"') ++i;  // up to two quotes of content
+          in = In::code;
+        }
+        break;
+      case In::literal:
+        if (c == '\'' || c == '\n') in = In::code;
+        break;
+      case In::ml_literal:
+        if (at(i, "'''")) {
+          while (i + 1 < text.size() && text[i + 1] == '\'') ++i;
+          in = In::code;
+        }
+        break;
+    }
+  }
+}
+
 // Keys are names: a quoted key holding '.', '[' or ']' (e.g. "simulation.end_time" = 5) would
 // look like a key path and be mistaken for another key; an empty key names nothing.
 void check_keys(const toml::table& t, const std::string& name, const std::string& base = "") {
@@ -422,6 +497,7 @@ CaseFile CaseFile::parse(std::string_view text, const std::string& name) {
   auto st = std::make_shared<CaseFileState>();
   st->path = name;
   check_text(text, name);
+  check_non_ascii_placement(text, name);
   try {
     st->doc = toml::parse(text, name);
   } catch (const toml::parse_error& e) {

@@ -32,7 +32,7 @@ double rayleigh(const Simulation& sim, double radius) {
 TEST(TimeStepPolicy, FractionOfTheSmallestRayleighTimeIncludingAnnouncedSizes) {
   auto sim = make_simulation({});
   const CaseFile f = CaseFile::parse("[simulation]\ntime_step_fraction = 0.1\n");
-  TimeStepPolicy policy(f.root().table("simulation"));
+  TimeStepPolicy policy(f.root().table("simulation"), 1.0);
   policy.add({1e-3, 0, "insert[0]", false});
   policy.add({2e-3, 0, "insert[1]", false});
   EXPECT_EQ(policy.decide(*sim).dt, 0.1 * rayleigh(*sim, 1e-3));  // exact: one formula
@@ -47,7 +47,7 @@ TEST(TimeStepPolicy, AGivenStepTooLargeForAnnouncedSizesIsRefusedNamingTheKey) {
   auto sim = make_simulation({});
   sim->modules.push_back(std::make_unique<Announces>(1e-5));
   const CaseFile f = CaseFile::parse("[simulation]\ntime_step = 1e-6\n");
-  TimeStepPolicy policy(f.root().table("simulation"));
+  TimeStepPolicy policy(f.root().table("simulation"), 1.0);
   policy.add({1e-3, 0, "insert[0]", false});
   try {
     policy.decide(*sim);
@@ -66,7 +66,7 @@ TEST(TimeStepPolicy, TheLinearLawWarnsWhenItsContactTimeIsUnderResolved) {
   for (double dt : {1e-3, 1e-5}) {
     auto sim = make_simulation(s);
     const CaseFile f = CaseFile::parse("[simulation]\ntime_step = " + std::to_string(dt) + "\n");
-    TimeStepPolicy policy(f.root().table("simulation"));
+    TimeStepPolicy policy(f.root().table("simulation"), 1.0);
     policy.add({1e-3, 0, "insert[0]", false});
     const auto d = policy.decide(*sim);
     bool warned = false;

@@ -12,6 +12,7 @@ std::function<int()> setup_check(CLI::App& sub) {
   sub.add_option("case", *path, "case file (TOML)")->required();
   return [path] {
     LoadedCase c = load_dem_case(*path);
+    check_output_directory(c);
     const Simulation& sim = *c.dem.sim;
     fmt::print(
         "{}: valid\n  {} material(s), {} wall(s), {} particle(s) placed so far, end time {} s\n  "

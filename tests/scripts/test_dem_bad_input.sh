@@ -43,7 +43,7 @@ expect "case.toml:$l: key 'walls[0].open': unknown face \"top\"" 's/^open = \["+
 expect "key 'walls[0].angular_velocity': a box wall can translate but not rotate" 's/^open = \["+z"\]/open = ["+z"]\nangular_velocity = [0.0, 0.0, 1.0]/'
 expect "TOML syntax error" 's/^friction = 0.5/friction = = 0.5/'
 expect "key 'insert[0].file'" 's/^type = "fill"/type = "data_file"\nfile = 3/'
-expect "no-such.data: cannot open the data file" 's/^type = "fill"/type = "data_file"\nfile = "no-such.data"/'
+expect "key 'insert[0].file': no such file" 's/^type = "fill"/type = "data_file"\nfile = "no-such.data"/'
 l=$(line_of '^rolling_friction')
 expect "case.toml:$l: key 'interaction.rolling_fricton': unknown key (did you mean 'rolling_friction'?)" 's/^rolling_friction = 0.05/rolling_fricton = 0.05/'
 [ $status -eq 0 ] && echo "ok: $count bad DEM case files rejected with exit 2, file:line, key path and value"

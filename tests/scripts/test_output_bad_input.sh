@@ -15,10 +15,10 @@ expect() {  # expect <command> <message part> <toml lines...>
   printf '\n[output]\ndirectory = "out"\n' >> "$tmp/case.toml"
   printf '%s\n' "$@" >> "$tmp/case.toml"
   local rc=0
-  "$bin" "$cmd" "$tmp/case.toml" > "$tmp/out" 2>&1 || rc=$?
-  if [ $rc -ne 2 ] || ! grep -qF -- "$want" "$tmp/out"; then
+  "$bin" "$cmd" "$tmp/case.toml" > "$tmp/log" 2>&1 || rc=$?
+  if [ $rc -ne 2 ] || ! grep -qF -- "$want" "$tmp/log"; then
     echo "FAIL ($cmd, exit $rc): wanted '$want' for: $*"
-    cat "$tmp/out"
+    cat "$tmp/log"
     status=1
   fi
 }
@@ -31,5 +31,10 @@ expect check "case.toml:$n: key 'output.walls'" 'walls = "yes"'
 expect check "case.toml:$n: key 'output.fields'" 'fields = "damage"'
 expect check "case.toml:$n: key 'output.particle_interval': unknown key" "particle_interval = 0.1"
 expect run "case.toml:$n: key 'output.fields': 'damage' is not a per-particle field" 'fields = ["damage"]'
-[ $status -eq 0 ] && echo "ok: 7 bad [output] tables rejected with exit 2, file:line and key path"
+# what run refuses, check refuses too
+expect check "case.toml:$n: key 'output.fields': 'damage' is not a per-particle field" 'fields = ["damage"]'
+touch "$tmp/out"  # the output folder is a file
+expect check "case.toml:$((n - 1)): key 'output.directory': output folder '$tmp/out' is a file" ''
+rm -f "$tmp/out"
+[ $status -eq 0 ] && echo "ok: 9 bad [output] tables rejected with exit 2, file:line and key path"
 exit $status

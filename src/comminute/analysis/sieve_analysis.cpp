@@ -6,7 +6,8 @@
 namespace comminute::analysis {
 
 std::vector<double> sqrt2_series(double top, double bottom) {
-  if (bottom <= 0) bottom = top / 1024.0;
+  if (!(top > 0) || !std::isfinite(top)) return {};  // no sizes (also: no float->int of a NaN)
+  if (!(bottom > 0)) bottom = top / 1024.0;
   // smallest k with 1e-3 * 2^(k/2) >= top
   auto k = static_cast<long>(std::ceil(2.0 * std::log2(top / 1e-3) - 1e-9));
   std::vector<double> s;

@@ -532,17 +532,22 @@ void BreakageModule::save(Archive& a) const {
 }
 
 void BreakageModule::load(const Archive& a) {
-  auto to_state = [](const std::vector<std::uint64_t>& v) {
+  auto to_state = [&a](const std::string& entry) {
+    const auto v = a.get<std::uint64_t>(entry);
     Rng::State s{};
-    std::copy_n(v.begin(), 4, s.begin());
+    if (v.size() != s.size())
+      throw Error(fmt::format("checkpoint entry '{}' holds {} words, a generator state {}", entry,
+                              v.size(), s.size()));
+    std::copy_n(v.begin(), s.size(), s.begin());
     return s;
   };
-  strength_rng_.set_state(to_state(a.get<std::uint64_t>("breakage/strength_rng")));
-  placement_rng_.set_state(to_state(a.get<std::uint64_t>("breakage/placement_rng")));
+  strength_rng_.set_state(to_state("breakage/strength_rng"));
+  placement_rng_.set_state(to_state("breakage/placement_rng"));
   log_ = a.get<EventRecord>("breakage/log");
   fines_mass_ = a.get<double>("breakage/fines_mass");
   fines_momentum_ = a.get_value<Vec3>("breakage/fines_momentum");
   const auto c = a.get<std::uint64_t>("breakage/counters");
+  if (c.size() != 2) throw Error("checkpoint entry 'breakage/counters' has a wrong size");
   breakages_ = c.at(0);
   events_ = c.at(1);
   removed_ = a.get_value<double>("breakage/removed");

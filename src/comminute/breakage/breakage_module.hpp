@@ -73,9 +73,11 @@ struct EventRecord {
   std::uint32_t broken = 0;      // 1 if it broke
   std::uint32_t fragments = 0;   // resolved fragments
   std::uint32_t fines_particles = 0;
-  double fines_mass = 0;  // kg booked as mass
-  double t10 = 0;         // %
+  std::uint32_t reserved = 0;  // explicit padding: checkpoint bytes are fully initialised
+  double fines_mass = 0;       // kg booked as mass
+  double t10 = 0;              // %
 };
+static_assert(sizeof(EventRecord) == 13 * 8, "EventRecord must have no padding (checkpoints)");
 
 class BreakageModule final : public Module {
  public:

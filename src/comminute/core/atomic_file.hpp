@@ -8,6 +8,13 @@
 
 namespace comminute {
 
+// Forces a written file (or a folder's entries, after a rename into it) onto the disk; throws
+// Error naming the path when the system reports a failure (a full disk shows up here at the
+// latest).
+void sync_to_disk(const std::filesystem::path& path);
+// Renames tmp onto path durably: fsync of tmp, rename, fsync of the folder.
+void durable_rename(const std::filesystem::path& tmp, const std::filesystem::path& path);
+
 class AtomicFile {
  public:
   explicit AtomicFile(std::filesystem::path path, std::ios::openmode mode = std::ios::out);
@@ -17,7 +24,7 @@ class AtomicFile {
 
   std::ofstream& stream() { return out_; }
   const std::filesystem::path& temp_path() const { return tmp_; }
-  void commit();  // flush, fsync-free rename to the final path; throws Error on I/O failure
+  void commit();  // flush, fsync, rename to the final path, fsync the folder; Error on failure
 
  private:
   std::filesystem::path path_, tmp_;

@@ -19,6 +19,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <toml++/toml.h>
@@ -78,6 +79,9 @@ class CaseTable {
   std::vector<std::string> strings(std::string_view key) const;
   // A path relative to the case file's folder (absolute paths are kept).
   std::filesystem::path file_path(std::string_view key) const;
+  // A data file to read: file_path() that must name an existing file (not a folder); the error
+  // names this case file, the key's line and the key.
+  std::filesystem::path input_file(std::string_view key) const;
 
   CaseTable table(std::string_view key) const;  // required sub-table
   std::optional<CaseTable> optional_table(std::string_view key) const;
@@ -114,6 +118,11 @@ class CaseFile {
   void reject_unknown() const;
   // Every key path that was read, for documentation checks.
   std::set<std::string> used_keys() const;
+  // What a checkpoint must agree with to be continued by this case: one (section, hash) per root
+  // key, in name order, from the TOML text of that table and the data files its keys named
+  // (file_path()). [output] and simulation.end_time are left out: they may change on a restart.
+  // Call after the case was read.
+  std::vector<std::pair<std::string, std::string>> fingerprint() const;
 
  private:
   std::shared_ptr<CaseFileState> state_;

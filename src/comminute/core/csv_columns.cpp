@@ -31,6 +31,9 @@ CsvColumns CsvColumns::read(const std::filesystem::path& path, const std::string
   CsvColumns c;
   c.path_ = path;
   c.key_ = key;
+  if (!std::filesystem::exists(path)) throw InputError(path.string(), key, 0, "no such CSV file");
+  if (std::filesystem::is_directory(path))
+    throw InputError(path.string(), key, 0, "is a directory, not a CSV file");
   std::ifstream in(path);
   if (!in) throw InputError(path.string(), key, 0, "cannot open CSV file");
   std::string line;
@@ -43,6 +46,14 @@ CsvColumns CsvColumns::read(const std::filesystem::path& path, const std::string
     if (c.names_.empty()) {
       c.names_ = cells;
       c.header_line_ = no;
+      for (std::size_t k = 0; k < cells.size(); ++k) {
+        if (cells[k].empty())
+          throw InputError(path.string(), key, no, fmt::format("column {} has no name", k + 1));
+        if (std::find(cells.begin(), cells.begin() + static_cast<long>(k), cells[k]) !=
+            cells.begin() + static_cast<long>(k))
+          throw InputError(path.string(), key, no,
+                           fmt::format("column name '{}' appears twice", cells[k]));
+      }
       continue;
     }
     if (cells.size() != c.names_.size())

@@ -37,8 +37,12 @@ class PlacementGrid {
 
  private:
   std::array<long, 3> coords(const Vec3& x) const {
-    return {static_cast<long>(std::floor(x.x / cell_)), static_cast<long>(std::floor(x.y / cell_)),
-            static_cast<long>(std::floor(x.z / cell_))};
+    // clamped before the conversion: a far-away or non-finite point must not overflow the long
+    auto c = [this](double v) {
+      const double q = std::floor(v / cell_);
+      return std::isfinite(q) ? static_cast<long>(std::clamp(q, -1e15, 1e15)) : 0L;
+    };
+    return {c(x.x), c(x.y), c(x.z)};
   }
   static std::uint64_t pack(long a, long b, long c) {
     auto u = [](long v) { return static_cast<std::uint64_t>(v + (1l << 20)) & 0x1FFFFF; };
@@ -133,7 +137,10 @@ void InsertionModule::pre_force(Simulation& sim) {
   if (!spec_.pour || sim.time < next_time_ || sim.time > spec_.end + spec_.interval) return;
   next_time_ += spec_.interval;
   const double t = std::min(sim.time, spec_.end) - spec_.start;
-  auto due = static_cast<std::uint64_t>(std::floor(spec_.rate * t + 1e-9));
+  const double due_real = std::floor(spec_.rate * t + 1e-9);  // checked before the conversion
+  auto due = std::isfinite(due_real) && due_real > 0
+                 ? static_cast<std::uint64_t>(std::min(due_real, 1e18))
+                 : std::uint64_t{0};
   if (spec_.count > 0) due = std::min(due, spec_.count);
   if (due <= inserted_) return;
   const std::uint64_t placed = place(sim, due - inserted_, 50);
@@ -156,10 +163,15 @@ void InsertionModule::save(Archive& a) const {
 void InsertionModule::load(const Archive& a) {
   auto s = a.get<std::uint64_t>(name() + "/rng");
   Rng::State st{};
+  if (s.size() != st.size())
+    throw Error(fmt::format("checkpoint entry '{}/rng' holds {} words, a generator state {}",
+                            name(), s.size(), st.size()));
   std::copy(s.begin(), s.end(), st.begin());
   rng_.set_state(st);
   inserted_ = a.get_value<std::uint64_t>(name() + "/inserted");
   next_time_ = a.get_value<double>(name() + "/next_time");
+  if (!std::isfinite(next_time_))
+    throw Error(fmt::format("checkpoint entry '{}/next_time' is not finite", name()));
 }
 
 }  // namespace comminute

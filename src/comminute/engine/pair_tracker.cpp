@@ -5,6 +5,10 @@
 #include <tuple>
 #include <unordered_map>
 
+#include <fmt/format.h>
+
+#include "comminute/core/error.hpp"
+
 namespace comminute {
 
 bool PairTracker::update(ParticleStore& p, const Walls& walls, SimulationOptions& options,
@@ -184,19 +188,73 @@ void PairTracker::save(Archive& a) const {
   a.put_value("sim/need_rebuild", static_cast<std::uint8_t>(stale_));
 }
 
+namespace {
+[[noreturn]] void corrupt(const std::string& entry, const std::string& what) {
+  throw Error("checkpoint entry '" + entry + "' " + what);
+}
+}  // namespace
+
 void PairTracker::load(const Archive& a, const ParticleStore& p, double skin) {
-  nlist_.restore(a.get<std::uint32_t>("pairs/first"), a.get<std::uint32_t>("pairs/second"),
-                 a.get<std::uint64_t>("pairs/ids"), a.get<std::uint8_t>("pairs/large"));
-  x_at_build_ = a.get<Vec3>("pairs/x_at_build");
-  r_at_build_ = a.get<double>("pairs/r_at_build");
-  reach_tracked_ = a.get<std::uint32_t>("pairs/reach_tracked");
+  // Everything is checked before it is used: a crafted or mixed-up checkpoint must not index out
+  // of range. The lists describe the particles at the last build (n_build of them); while they
+  // are current (not stale) that is the particle count.
+  auto first = a.get<std::uint32_t>("pairs/first");
+  auto second = a.get<std::uint32_t>("pairs/second");
+  auto ids = a.get<std::uint64_t>("pairs/ids");
+  auto large = a.get<std::uint8_t>("pairs/large");
+  auto x_build = a.get<Vec3>("pairs/x_at_build");
+  auto r_build = a.get<double>("pairs/r_at_build");
+  auto tracked = a.get<std::uint32_t>("pairs/reach_tracked");
+  auto candidates = a.get<WallContactRecord>("walls/candidates");
+  auto travel = a.get<double>("walls/travel");
+  auto full_scan = a.get<std::uint8_t>("walls/full_scan");
+  const bool stale = a.get_value<std::uint8_t>("sim/need_rebuild") != 0;
+  const std::size_t n_build = ids.size();
+  if (!stale && n_build != p.size())
+    corrupt("pairs/ids", fmt::format("holds {} particles, the checkpoint {}", n_build, p.size()));
+  if (second.size() != first.size())
+    corrupt("pairs/second",
+            fmt::format("holds {} pairs, 'pairs/first' {}", second.size(), first.size()));
+  if (large.size() != n_build || x_build.size() != n_build || r_build.size() != n_build)
+    corrupt("pairs/large", fmt::format("the build arrays (large {}, x_at_build {}, r_at_build {}) "
+                                       "do not match the {} particles of the build",
+                                       large.size(), x_build.size(), r_build.size(), n_build));
+  for (std::size_t k = 0; k < first.size(); ++k) {
+    if (first[k] >= n_build || second[k] >= n_build || first[k] == second[k])
+      corrupt("pairs/first", fmt::format("pair {} ({}, {}) is not a pair of two of the {} "
+                                         "particles",
+                                         k, first[k], second[k], n_build));
+    if (k > 0 && first[k] < first[k - 1])
+      corrupt("pairs/first", fmt::format("pair {} is not grouped by its owner", k));
+  }
+  for (std::uint32_t s : tracked)
+    if (s >= n_build) corrupt("pairs/reach_tracked", fmt::format("slot {} is out of range", s));
+  const std::size_t n_walls = travel.size();
+  if (full_scan.size() != n_walls)
+    corrupt("walls/full_scan",
+            fmt::format("holds {} walls, 'walls/travel' {}", full_scan.size(), n_walls));
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    const auto& c = candidates[k];
+    // (`candidate` is only meaningful during a build: it is not read from a checkpoint)
+    if (c.particle >= n_build || c.wall >= n_walls)
+      corrupt("walls/candidates", fmt::format("candidate {} (particle {}, wall {}) is out of range",
+                                              k, c.particle, c.wall));
+  }
+  for (double d : travel)
+    if (!std::isfinite(d)) corrupt("walls/travel", "is not finite");
+  const double disp2 = a.get_value<double>("sim/max_disp2");
+  if (!std::isfinite(disp2) || disp2 < 0) corrupt("sim/max_disp2", "is not a finite distance");
+  nlist_.restore(std::move(first), std::move(second), std::move(ids), std::move(large));
+  x_at_build_ = std::move(x_build);
+  r_at_build_ = std::move(r_build);
+  reach_tracked_ = std::move(tracked);
   if (x_at_build_.size() == p.size()) nlist_.rebuild_index(x_at_build_, r_at_build_, skin);
-  wall_candidates_ = a.get<WallContactRecord>("walls/candidates");
-  wall_travel_ = a.get<double>("walls/travel");
-  wall_full_scan_ = a.get<std::uint8_t>("walls/full_scan");
+  wall_candidates_ = std::move(candidates);
+  wall_travel_ = std::move(travel);
+  wall_full_scan_ = std::move(full_scan);
   rebuilds_ = a.get_value<std::uint64_t>("sim/rebuilds");
-  max_disp2_ = a.get_value<double>("sim/max_disp2");
-  stale_ = a.get_value<std::uint8_t>("sim/need_rebuild") != 0;
+  max_disp2_ = disp2;
+  stale_ = stale;
 }
 
 }  // namespace comminute

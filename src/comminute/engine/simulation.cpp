@@ -151,6 +151,48 @@ void Simulation::save(Archive& a) const {
   for (const auto& m : modules) m->save(a);
 }
 
+// A checkpoint's particle arrays: one entry per particle in each, materials of this case,
+// finite positive sizes, unique ids below the next id.
+namespace {
+void validate_loaded_particles(const ParticleStore& p, std::size_t n_materials) {
+  const std::size_t n = p.x.size();
+  auto bad = [](const char* entry, const std::string& what) {
+    throw Error(fmt::format("checkpoint entry 'particles/{}' {}", entry, what));
+  };
+  const std::pair<const char*, std::size_t> sizes[] = {{"v", p.v.size()},
+                                                       {"w", p.w.size()},
+                                                       {"f", p.f.size()},
+                                                       {"t", p.t.size()},
+                                                       {"radius", p.radius.size()},
+                                                       {"mass", p.mass.size()},
+                                                       {"inertia", p.inertia.size()},
+                                                       {"id", p.id.size()},
+                                                       {"material", p.material.size()},
+                                                       {"flags", p.flags.size()}};
+  for (const auto& [name, size] : sizes)
+    if (size != n) bad(name, fmt::format("holds {} particles, 'particles/x' {}", size, n));
+  for (std::size_t k = 0; k < p.field_names().size(); ++k)
+    if (p.field(k).size() != n)
+      throw Error(fmt::format("checkpoint entry 'fields/{}' holds {} particles, not {}",
+                              p.field_names()[k], p.field(k).size(), n));
+  std::vector<std::uint64_t> ids(p.id);
+  std::sort(ids.begin(), ids.end());
+  if (std::adjacent_find(ids.begin(), ids.end()) != ids.end()) bad("id", "repeats an id");
+  if (!ids.empty() && ids.back() >= p.next_id()) bad("id", "holds an id beyond 'next_id'");
+  for (std::size_t i = 0; i < n; ++i) {
+    if (p.material[i] >= n_materials)
+      bad("material", fmt::format("particle {}: material {} is not one of the case's {}", i,
+                                  p.material[i], n_materials));
+    if (!(std::isfinite(p.radius[i]) && p.radius[i] > 0 && std::isfinite(p.mass[i]) &&
+          p.mass[i] > 0 && std::isfinite(p.inertia[i]) && p.inertia[i] > 0))
+      bad("radius", fmt::format("particle {}: radius, mass or inertia not finite and positive", i));
+    for (int c = 0; c < 3; ++c)
+      if (!std::isfinite(p.x[i][c]) || !std::isfinite(p.v[i][c]) || !std::isfinite(p.w[i][c]))
+        bad("x", fmt::format("particle {}: position or velocity is not finite", i));
+  }
+}
+}  // namespace
+
 void Simulation::load(const Archive& a) {
   assemble_contacts();
   auto& p = particles;
@@ -168,18 +210,42 @@ void Simulation::load(const Archive& a) {
   p.set_next_id(a.get_value<std::uint64_t>("particles/next_id"));
   for (std::size_t k = 0; k < p.field_names().size(); ++k)
     p.field(k) = a.get<double>("fields/" + p.field_names()[k]);
+  validate_loaded_particles(p, materials.size());
   options.skin = a.get_value<double>("sim/skin");  // before the tracker: its reach index uses it
+  if (!std::isfinite(options.skin) || options.skin < 0)
+    throw Error(fmt::format("checkpoint entry 'sim/skin' = {} is not a distance", options.skin));
+  // one entry per wall once the lists were built (empty before the first build)
+  const std::size_t travel = a.get<double>("walls/travel").size();
+  if (travel != walls.size() && !(travel == 0 && a.get_value<std::uint8_t>("sim/need_rebuild")))
+    throw Error(fmt::format("checkpoint entry 'walls/travel' holds {} walls, the case {}", travel,
+                            walls.size()));
   tracker_.load(a, p, options.skin);
   pair_state_.load(a, "pairs/state/", tracker_.pairs().size());
   wall_state_.load(a, "walls/state/", tracker_.wall_candidates().size());
   for (std::size_t k = 0; k < walls.size(); ++k) {
     const std::string pre = fmt::format("walls/{}/", k);
+    const auto geometry = a.get<Vec3>(pre + "geometry");
+    const auto kinematics = a.get<Kinematics>(pre + "kinematics");
+    bool finite = geometry.size() == 3 && kinematics.size() == 1;
+    for (const Vec3& g : geometry) finite = finite && std::isfinite(norm2(g));
+    for (const Kinematics& kin : kinematics)
+      finite = finite &&
+               std::isfinite(norm2(kin.velocity) + norm2(kin.angular_velocity) + norm2(kin.center));
+    if (!finite)
+      throw Error(
+          fmt::format("checkpoint entries '{}geometry' and '{}kinematics' do not hold a "
+                      "finite wall (3 points and one motion)",
+                      pre, pre));
     walls[k]->load(a, pre);
-    walls[k]->kinematics = a.get<Kinematics>(pre + "kinematics").at(0);
+    walls[k]->kinematics = kinematics.at(0);
   }
   time = a.get_value<double>("sim/time");
   step_count = a.get_value<std::uint64_t>("sim/step");
   dt = a.get_value<double>("sim/dt");
+  if (!std::isfinite(time) || time < 0)
+    throw Error(fmt::format("checkpoint entry 'sim/time' = {} is not a time", time));
+  if (!std::isfinite(dt) || dt <= 0)
+    throw Error(fmt::format("checkpoint entry 'sim/dt' = {} is not a positive time step", dt));
   ledger = a.get_value<EnergyLedger>("sim/ledger");
   flush_denormals_to_zero();
   elastic_energy_ = a.get_value<double>("sim/elastic");

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <limits>
 
 #include "comminute/core/units.hpp"
@@ -10,7 +11,8 @@
 
 namespace comminute {
 
-TimeStepPolicy::TimeStepPolicy(const CaseTable& simulation) : table_(simulation) {
+TimeStepPolicy::TimeStepPolicy(const CaseTable& simulation, double end_time)
+    : table_(simulation), end_time_(end_time) {
   fraction_ = simulation.number("time_step_fraction", Limits{0.0, 1.0, true, false}, 0.2);
   if (simulation.has("time_step")) given_ = simulation.number("time_step", Limits::positive());
 }
@@ -64,6 +66,17 @@ TimeStepPolicy::Decision TimeStepPolicy::decide(Simulation& sim) const {
     if (d.dt > limit.dt)
       d.warnings.push_back(fmt::format("the time step {:.4g} s {}", d.dt, limit.reason));
   }
+  const std::string key = given_ > 0 ? "time_step" : "end_time";
+  if (!(d.dt > 0) || !std::isfinite(d.dt))
+    table_.fail(key, fmt::format("time step {:.4g} s", d.dt));
+  if (d.dt > end_time_)
+    table_.fail(key, fmt::format("the time step {:.4g} s exceeds the end time {:.4g} s: the run "
+                                 "would take no step",
+                                 d.dt, end_time_));
+  if (end_time_ / d.dt > max_steps)
+    table_.fail(key, fmt::format("end time {:.4g} s / time step {:.4g} s = {:.3g} steps, more than "
+                                 "the limit of {:.0e} steps",
+                                 end_time_, d.dt, end_time_ / d.dt, max_steps));
   sim.dt = d.dt;
   return d;
 }

@@ -5,7 +5,8 @@
 // the smallest fragment each material can produce). A given time_step above 30 % of the Rayleigh
 // time is a warning for inserted particles and an error for announced ones (fragments are born
 // fast and overlapping). The contact law's own limit for the lightest inserted pair is checked
-// last (a warning).
+// last (a warning). The run must take at least one step and at most max_steps: more is a mistake
+// (a time step in the wrong unit, an end time in ms); both are refused naming the key.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -25,7 +26,11 @@ struct ParticleSize {
 
 class TimeStepPolicy {
  public:
-  explicit TimeStepPolicy(const CaseTable& simulation);
+  // At 10^6 particle-steps/s a run of one particle would take 10^3 s per 10^9 steps.
+  static constexpr double max_steps = 1e9;
+
+  // `simulation`: the [simulation] table (its time-step keys); end_time in s.
+  TimeStepPolicy(const CaseTable& simulation, double end_time);
   void add(ParticleSize s) { sizes_.push_back(std::move(s)); }
 
   struct Decision {
@@ -34,13 +39,15 @@ class TimeStepPolicy {
     std::vector<std::string> warnings;  // limits it exceeds
   };
   // Collects the modules' announcements, decides and sets sim.dt. Throws InputError naming
-  // [simulation] time_step when a given step cannot resolve an announced particle.
+  // [simulation] time_step when a given step cannot resolve an announced particle, or when the
+  // step count is below one or above max_steps.
   Decision decide(Simulation& sim) const;
 
  private:
   CaseTable table_;
   double fraction_ = 0.2;
   double given_ = 0;  // s, 0: not given
+  double end_time_ = 0;
   std::vector<ParticleSize> sizes_;
 };
 

@@ -6,6 +6,15 @@
 
 namespace comminute {
 
+namespace {
+// floor(v) as a cell count: clamped in floating point before the conversion (a far-away or
+// non-finite coordinate must not overflow the int).
+int cells_along(double v) {
+  if (!(v > 0)) return 0;  // also NaN
+  return static_cast<int>(std::min(std::floor(v), 1e9));
+}
+}  // namespace
+
 void CellGrid::build(const std::vector<Vec3>& x, const std::vector<std::uint32_t>& subset,
                      double edge) {
   constexpr double inf = std::numeric_limits<double>::infinity();
@@ -17,12 +26,13 @@ void CellGrid::build(const std::vector<Vec3>& x, const std::vector<std::uint32_t
     }
   if (subset.empty()) lo = hi = Vec3{};
   lo_ = lo;
-  edge_ = edge;
+  // a zero, negative or non-finite edge would never give a finite grid
+  edge_ = std::isfinite(edge) && edge > 0 ? edge : std::max(1.0, hi.x - lo.x);
   const double max_cells = 8.0 * static_cast<double>(subset.size()) + 27.0;
   while (true) {
     double cells = 1;
     for (int a = 0; a < 3; ++a) {
-      dims_[a] = std::max(1, static_cast<int>(std::floor((hi[a] - lo[a]) / edge_)) + 1);
+      dims_[a] = std::max(1, cells_along((hi[a] - lo[a]) / edge_) + 1);
       cells *= dims_[a];
     }
     if (cells <= max_cells) break;
@@ -45,7 +55,7 @@ void CellGrid::build(const std::vector<Vec3>& x, const std::vector<std::uint32_t
 std::array<int, 3> CellGrid::cell_of(const Vec3& p) const {
   std::array<int, 3> c{};
   for (int a = 0; a < 3; ++a)
-    c[a] = std::clamp(static_cast<int>(std::floor((p[a] - lo_[a]) / edge_)), 0, dims_[a] - 1);
+    c[a] = std::clamp(cells_along((p[a] - lo_[a]) / edge_), 0, dims_[a] - 1);
   return c;
 }
 

@@ -85,7 +85,8 @@ void NeighborList::build(const ParticleStore& p, double skin,
         large_grid.visit_around(large_grid.cell_of(xi), 1, [&](std::uint32_t j) {
           if (j > i) consider(j);
         });
-        const int reach = static_cast<int>(std::ceil((ri + r_ref + skin) / small_grid.edge()));
+        const double cells = std::ceil((ri + r_ref + skin) / small_grid.edge());
+        const int reach = cells > 0 ? static_cast<int>(std::min(cells, 1e9)) : 0;
         small_grid.visit_around(small_grid.cell_of(xi), reach, consider);
       }
     }

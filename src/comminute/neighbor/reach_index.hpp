@@ -36,7 +36,8 @@ class ReachIndex {
       if (slot_[e] != none) f(slot_[e]);
     };
     auto cells = [&](const CellGrid& g, double r_other) {
-      return static_cast<int>(std::ceil((r + r_other + gap) / g.edge()));
+      const double n = std::ceil((r + r_other + gap) / g.edge());  // clamped before converting
+      return n > 0 ? static_cast<int>(std::min(n, 1e9)) : 0;
     };
     const auto c = small_.cell_of(x);
     small_.visit_around(c, cells(small_, r_small_), visit);

@@ -6,7 +6,7 @@
 namespace comminute::pbm {
 
 CollisionSpectrum read_collision_spectrum(const CaseTable& t, const std::string& key) {
-  const auto path = t.file_path(key);
+  const auto path = t.input_file(key);
   const auto csv = CsvColumns::read(path, t.key_path(key));
   CollisionSpectrum s{csv.column("energy_J"), csv.column("frequency_per_s")};
   for (std::size_t r = 0; r < s.energy.size(); ++r)

@@ -11,7 +11,10 @@ namespace comminute::pbm {
 
 void Rk4::advance(const OdeSystem& sys, double& t, double t_end, Eigen::VectorXd& y) {
   if (!(t_end > t)) return;
-  const auto n = static_cast<std::size_t>(std::ceil((t_end - t) / h_ * (1 - 1e-12)));
+  const double steps = std::ceil((t_end - t) / h_ * (1 - 1e-12));
+  if (!(steps >= 1 && steps <= 1e12))  // checked before the conversion (NaN, inf, overflow)
+    throw Error(fmt::format("RK4: {} steps of {} s from t = {} s to {} s", steps, h_, t, t_end));
+  const auto n = static_cast<std::size_t>(steps);
   const double h = (t_end - t) / static_cast<double>(n);
   const double t0 = t;
   for (std::size_t s = 0; s < n; ++s) {

@@ -43,13 +43,16 @@ namespace {
 // the strength model's keys (CriticalStressRegistry).
 std::unique_ptr<SelectionFunction> make(const CaseTable& t, const ModelContext&) {
   const double lambda = t.number("lambda", Limits::non_negative());
-  const auto path = t.file_path("frequency_file");
+  const auto path = t.input_file("frequency_file");
   const auto csv = CsvColumns::read(path, t.key_path("frequency_file"));
   const auto s = csv.column("stress_Pa"), n = csv.column("frequency_per_s_Pa");
   for (std::size_t r = 0; r < s.size(); ++r) {
     if (n[r] < 0)
       throw InputError(path.string(), t.key_path("frequency_file"), csv.line_of_row(r),
                        fmt::format("negative contact frequency {}", n[r]));
+    if (s[r] < 0)
+      throw InputError(path.string(), t.key_path("frequency_file"), csv.line_of_row(r),
+                       fmt::format("negative stress {} Pa (a contact stress is >= 0)", s[r]));
     if (r > 0 && !(s[r] > s[r - 1]))
       throw InputError(path.string(), t.key_path("frequency_file"), csv.line_of_row(r),
                        "stress_Pa must increase");

@@ -19,7 +19,7 @@ std::unique_ptr<BreakageFunction> make(const CaseTable& t, const ModelContext&) 
   std::string key = "ratio";
   if (t.has("file")) {
     key = "file";
-    const auto csv = CsvColumns::read(t.file_path("file"), t.key_path("file"));
+    const auto csv = CsvColumns::read(t.input_file("file"), t.key_path("file"));
     ratio = csv.column("size_ratio");
     passing = csv.column("cumulative_passing");
   } else {

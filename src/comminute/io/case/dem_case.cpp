@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "comminute/core/error.hpp"
+#include "comminute/core/memory.hpp"
 #include "comminute/core/units.hpp"
 #include "comminute/engine/insertion.hpp"
 #include "comminute/io/case/lammps_data.hpp"
@@ -119,7 +120,7 @@ SmallestParticle read_insertion(const CaseTable& t, std::size_t index, Simulatio
   const std::string type = t.choice("type", {"fill", "pour", "data_file"});
   const std::uint16_t mat = material_index(t, "material", sim);
   if (type == "data_file") {
-    auto particles = read_lammps_data(t.file_path("file"));
+    auto particles = read_lammps_data(t.input_file("file"), t.key_path("file"));
     double rmin = std::numeric_limits<double>::infinity();
     for (auto& p : particles) {
       p.material = mat;
@@ -148,12 +149,37 @@ SmallestParticle read_insertion(const CaseTable& t, std::size_t index, Simulatio
     const bool has_count = t.has("count"), has_fraction = t.has("volume_fraction");
     if (has_count == has_fraction) t.fail({}, "give exactly one of 'count' or 'volume_fraction'");
     if (has_count) s.count = static_cast<std::uint64_t>(t.integer("count", 1, 1'000'000'000));
+    // particles, neighbour list and contact state: about 1 kB per particle
+    if (exceeds_memory(1024.0 * static_cast<double>(s.count)))
+      t.fail("count", fmt::format("{} particles need about {:.3g} GB, more than this machine's "
+                                  "{:.3g} GB",
+                                  s.count, 1024.0 * static_cast<double>(s.count) / 1e9,
+                                  physical_memory_bytes() / 1e9));
     if (has_fraction)
       s.volume_fraction = t.number("volume_fraction", Limits{0.0, 0.5, true, false});
   }
   const double rmin = 0.5 * s.size->min_diameter();
   sim.modules.push_back(std::make_unique<InsertionModule>(std::move(s), sim.seed));
   return {rmin, mat};
+}
+
+}  // namespace
+
+namespace {
+
+// Wall names become column names of timeseries.csv: refused here (check) rather than when the
+// output is opened (run).
+void check_wall_names(const std::vector<CaseTable>& tables, const Simulation& sim) {
+  for (std::size_t k = 0; k < sim.walls.size() && k < tables.size(); ++k) {
+    const std::string& n = sim.walls[k]->name;
+    if (n.empty() || n.find_first_of(",\"\r\n[]") != std::string::npos)
+      tables[k].fail("name", fmt::format("wall name '{}' cannot name a CSV column (empty, or "
+                                         "holds a comma, quote, bracket or line break)",
+                                         n));
+    for (std::size_t j = 0; j < k; ++j)
+      if (sim.walls[j]->name == n)
+        tables[k].fail("name", fmt::format("two walls are named '{}'; names must differ", n));
+  }
 }
 
 }  // namespace
@@ -179,11 +205,12 @@ DemCase build_dem_case(const CaseTable& root) {
   const auto inserts = root.tables("insert");
   if (inserts.empty()) root.fail({}, "no particles: add at least one [[insert]] table");
   // the time step resolves the smallest particle of each insertion (wall materials do not count)
-  out.time_step = std::make_unique<TimeStepPolicy>(s);
+  out.time_step = std::make_unique<TimeStepPolicy>(s, out.end_time);
   for (std::size_t k = 0; k < inserts.size(); ++k) {
     const SmallestParticle sp = read_insertion(inserts[k], k, sim);
     out.time_step->add({sp.radius, sp.material, fmt::format("insert[{}]", k), false});
   }
+  check_wall_names(walls, sim);
   return out;
 }
 

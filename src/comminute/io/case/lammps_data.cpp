@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <charconv>
+#include <cmath>
 #include <fstream>
+#include <initializer_list>
 #include <sstream>
 #include <unordered_map>
 
@@ -10,9 +13,21 @@
 
 namespace comminute::io {
 
-std::vector<ParticleInit> read_lammps_data(const std::filesystem::path& file) {
+namespace {
+bool finite_all(std::initializer_list<double> v) {
+  for (double x : v)
+    if (!std::isfinite(x)) return false;
+  return true;
+}
+}  // namespace
+
+std::vector<ParticleInit> read_lammps_data(const std::filesystem::path& file,
+                                           const std::string& key) {
+  if (!std::filesystem::exists(file)) throw InputError(file.string(), key, 0, "no such data file");
+  if (std::filesystem::is_directory(file))
+    throw InputError(file.string(), key, 0, "is a directory, not a data file");
   std::ifstream in(file);
-  if (!in) throw InputError(file.string(), "", 0, "cannot open the data file");
+  if (!in) throw InputError(file.string(), key, 0, "cannot open the data file");
   std::vector<ParticleInit> out;
   std::unordered_map<long, std::size_t> by_id;
   std::string line, section;
@@ -33,29 +48,37 @@ std::vector<ParticleInit> read_lammps_data(const std::filesystem::path& file) {
       section.clear();  // another section we do not read
       continue;
     }
-    const long id = std::stol(first);
+    long id = 0;
+    const auto r = std::from_chars(first.data(), first.data() + first.size(), id);
+    if (r.ec != std::errc() || r.ptr != first.data() + first.size() || id < 1)
+      throw InputError(file.string(), key, lineno,
+                       fmt::format("atom id '{}' is not a positive integer in range", first));
     if (section == "Atoms") {
       int type;
       double d, rho;
       ParticleInit p;
-      if (!(s >> type >> d >> rho >> p.x.x >> p.x.y >> p.x.z) || !(d > 0) || !(rho > 0))
-        throw InputError(file.string(), "", lineno,
-                         "expected 'id type diameter density x y z' with diameter, density > 0");
+      if (!(s >> type >> d >> rho >> p.x.x >> p.x.y >> p.x.z) || !(d > 0) || !(rho > 0) ||
+          !finite_all({d, rho, p.x.x, p.x.y, p.x.z}))
+        throw InputError(file.string(), key, lineno,
+                         "expected 'id type diameter density x y z' with diameter, density > 0, "
+                         "all finite");
       p.radius = 0.5 * d;
       p.density = rho;
-      by_id[id] = out.size();
+      if (!by_id.emplace(id, out.size()).second)
+        throw InputError(file.string(), key, lineno, fmt::format("atom id {} appears twice", id));
       out.push_back(p);
     } else {
       auto it = by_id.find(id);
       if (it == by_id.end())
-        throw InputError(file.string(), "", lineno,
+        throw InputError(file.string(), key, lineno,
                          fmt::format("velocity for unknown atom {}", id));
       ParticleInit& p = out[it->second];
-      if (!(s >> p.v.x >> p.v.y >> p.v.z >> p.w.x >> p.w.y >> p.w.z))
-        throw InputError(file.string(), "", lineno, "expected 'id vx vy vz wx wy wz'");
+      if (!(s >> p.v.x >> p.v.y >> p.v.z >> p.w.x >> p.w.y >> p.w.z) ||
+          !finite_all({p.v.x, p.v.y, p.v.z, p.w.x, p.w.y, p.w.z}))
+        throw InputError(file.string(), key, lineno, "expected 'id vx vy vz wx wy wz', all finite");
     }
   }
-  if (out.empty()) throw InputError(file.string(), "", 0, "no Atoms section with particles found");
+  if (out.empty()) throw InputError(file.string(), key, 0, "no Atoms section with particles found");
   return out;
 }
 

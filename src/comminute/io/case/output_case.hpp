@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "comminute/core/cadence.hpp"
@@ -28,6 +29,9 @@ struct OutputOptions {
   // registered their fields) is reported as an input error at the right line.
   std::filesystem::path case_file;
   long fields_line = 0;
+  // The case's fingerprint (CaseFile::fingerprint()), written into every checkpoint so that a
+  // restart with another case is refused.
+  std::vector<std::pair<std::string, std::string>> case_fingerprint;
 };
 
 // Reads the [output] table (`t` is that table). Every key is optional.

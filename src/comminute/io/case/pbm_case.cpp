@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <boost/math/special_functions/erf.hpp>
 #include <cmath>
+#include <limits>
 
 #include "comminute/core/csv_columns.hpp"
 #include "comminute/core/error.hpp"
+#include "comminute/core/memory.hpp"
 #include "comminute/pbm/population_split.hpp"
 
 namespace comminute::io {
@@ -22,7 +24,14 @@ pbm::GridCoordinate coordinate(const CaseTable& t) {
 }
 
 std::size_t classes(const CaseTable& t) {
-  return static_cast<std::size_t>(t.integer("classes", 1, 100000));
+  const auto n = static_cast<std::size_t>(t.integer("classes", 1, 100000));
+  // the solvers hold a few n x n matrices of doubles (breakage, its transform, work arrays)
+  const double bytes = 4.0 * 8.0 * static_cast<double>(n) * static_cast<double>(n);
+  if (exceeds_memory(bytes))
+    t.fail("classes", fmt::format("{} classes need about {:.3g} GB ({} x {} matrices), more than "
+                                  "this machine's {:.3g} GB",
+                                  n, bytes / 1e9, n, n, physical_memory_bytes() / 1e9));
+  return n;
 }
 
 // Fractions (in the initial table's basis) per class from a cumulative passing curve: linear in
@@ -87,18 +96,18 @@ std::vector<double> initial_fractions(const CaseTable& t, const pbm::SizeGrid& g
     if (!(sum > 1e-9)) t.fail("median", "the lognormal distribution lies outside the grid");
     for (double& x : f) x /= sum;
   } else {
-    const auto csv = CsvColumns::read(t.file_path("file"), t.key_path("file"));
+    const auto csv = CsvColumns::read(t.input_file("file"), t.key_path("file"));
     const auto sizes = csv.column("size_m"), passing = csv.column("cumulative_passing");
     for (std::size_t r = 0; r < sizes.size(); ++r) {
       if (!(sizes[r] > 0) || (r > 0 && !(sizes[r] > sizes[r - 1])))
-        throw InputError(t.file_path("file").string(), t.key_path("file"), csv.line_of_row(r),
+        throw InputError(t.input_file("file").string(), t.key_path("file"), csv.line_of_row(r),
                          "size_m must be positive and increasing");
       if (passing[r] < 0 || passing[r] > 1 + 1e-6 || (r > 0 && passing[r] < passing[r - 1]))
-        throw InputError(t.file_path("file").string(), t.key_path("file"), csv.line_of_row(r),
+        throw InputError(t.input_file("file").string(), t.key_path("file"), csv.line_of_row(r),
                          "cumulative_passing must be non-decreasing within [0, 1]");
     }
     if (std::abs(passing.back() - 1) > 1e-6)
-      throw InputError(t.file_path("file").string(), t.key_path("file"),
+      throw InputError(t.input_file("file").string(), t.key_path("file"),
                        csv.line_of_row(passing.size() - 1),
                        fmt::format("cumulative_passing ends at {}, not 1", passing.back()));
     f = from_cumulative(g, sizes, passing);
@@ -156,6 +165,28 @@ std::unique_ptr<pbm::BreakageFunction> read_breakage(const CaseTable& b,
   return std::make_unique<pbm::PopulationSplit>(std::move(out));
 }
 
+namespace {
+// RK4 takes fixed steps: one larger than an output interval would be shortened silently, and a
+// count beyond the adaptive integrator's cap would run for hours.
+void check_rk4_step(const CaseTable& s, const pbm::Problem& p) {
+  const double h = p.integration.time_step;
+  double smallest = std::numeric_limits<double>::infinity(), previous = 0;
+  for (double t : p.times) {
+    if (t > previous) smallest = std::min(smallest, t - previous);
+    previous = t;
+  }
+  if (h > smallest)
+    s.fail("time_step",
+           fmt::format("the RK4 step {} s exceeds the smallest output interval {} s", h, smallest));
+  const double steps = p.times.back() / h;
+  const auto cap = static_cast<double>(p.integration.adaptive.max_steps);
+  if (steps > cap)
+    s.fail("time_step", fmt::format("{} s / {} s = {:.3g} RK4 steps, more than the cap of {} "
+                                    "steps (the adaptive integrator's)",
+                                    p.times.back(), h, steps, cap));
+}
+}  // namespace
+
 pbm::Problem read_pbm_problem(const CaseTable& root) {
   const auto material = root.optional_table("material");
   const double density =
@@ -205,6 +236,7 @@ pbm::Problem read_pbm_problem(const CaseTable& root) {
   for (std::size_t i = 1; i < p.times.size(); ++i)
     if (!(p.times[i] > p.times[i - 1]))
       s.fail("times", fmt::format("times must increase: times[{}] = {} s", i, p.times[i]));
+  if (p.integration.scheme == pbm::Scheme::rk4) check_rk4_step(s, p);
   return p;
 }
 

@@ -1,10 +1,13 @@
 #include "comminute/io/output/checkpoint.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <hdf5.h>
 
+#include <map>
 #include <vector>
 
+#include "comminute/core/atomic_file.hpp"
 #include "comminute/core/error.hpp"
 
 namespace comminute::io {
@@ -96,9 +99,11 @@ void write_entry(const Io& io, hid_t group, std::size_t k, const std::string& na
   const std::string ds_name = fmt::format("{:06d}", k);
   const hsize_t n = bytes.size();
   Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose);
-  Handle ds(H5Dcreate2(group, ds_name.c_str(), H5T_NATIVE_UINT8, space, H5P_DEFAULT, H5P_DEFAULT,
-                       H5P_DEFAULT),
-            H5Dclose);
+  Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  io.check(H5Pset_obj_track_times(dcpl, false), "dataset properties");  // reproducible bytes
+  Handle ds(
+      H5Dcreate2(group, ds_name.c_str(), H5T_NATIVE_UINT8, space, H5P_DEFAULT, dcpl, H5P_DEFAULT),
+      H5Dclose);
   if (!ds.ok()) io.fail(fmt::format("cannot create the dataset of entry '{}'", name));
   if (n > 0)
     io.check(H5Dwrite(ds, H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data()),
@@ -140,7 +145,10 @@ void write_checkpoint(const std::filesystem::path& path, const Archive& a, Check
   const Io io{tmp};
   try {
     {
-      Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+      // strong close: closing the file closes every object still open in it, on every path
+      Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+      io.check(H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG), "file properties");
+      Handle file(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose);
       if (!file.ok()) io.fail("cannot create the file");
       write_attribute(io, file, "format_version", H5T_NATIVE_INT, &info.format_version);
       write_string_attribute(io, file, "comminute_version", info.comminute_version);
@@ -149,13 +157,15 @@ void write_checkpoint(const std::filesystem::path& path, const Archive& a, Check
       write_attribute(io, file, "threads", H5T_NATIVE_INT, &info.threads);
       const std::uint64_t count = a.entries().size();
       write_attribute(io, file, "entries", H5T_NATIVE_UINT64, &count);
-      Handle group(H5Gcreate2(file, "entries", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+      Handle gcpl(H5Pcreate(H5P_GROUP_CREATE), H5Pclose);
+      io.check(H5Pset_obj_track_times(gcpl, false), "group properties");
+      Handle group(H5Gcreate2(file, "entries", H5P_DEFAULT, gcpl, H5P_DEFAULT), H5Gclose);
       if (!group.ok()) io.fail("cannot create group 'entries'");
       std::size_t k = 0;
       for (const auto& [name, bytes] : a.entries()) write_entry(io, group, k++, name, bytes);
       io.check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush");
     }
-    std::filesystem::rename(tmp, path);
+    durable_rename(tmp, path);  // fsync of file and folder: the previous checkpoint stays
   } catch (...) {
     std::error_code ec;
     std::filesystem::remove(tmp, ec);
@@ -179,6 +189,9 @@ Archive read_checkpoint(const std::filesystem::path& path, CheckpointInfo* info_
   read_attribute(io, file, "entries", H5T_NATIVE_UINT64, &count);
   Handle group(H5Gopen2(file, "entries", H5P_DEFAULT), H5Gclose);
   if (!group.ok()) io.fail("group 'entries' is missing");
+  std::error_code ec;
+  const auto file_size = static_cast<hsize_t>(std::filesystem::file_size(path, ec));
+  if (count > file_size) io.fail(fmt::format("entry count {} is not plausible", count));
   Archive a;
   for (std::uint64_t k = 0; k < count; ++k) {
     const std::string ds_name = fmt::format("{:06d}", k);
@@ -190,6 +203,8 @@ Archive read_checkpoint(const std::filesystem::path& path, CheckpointInfo* info_
       io.fail(fmt::format("entry '{}' is not a 1-D array", name));
     hsize_t n = 0;
     H5Sget_simple_extent_dims(space, &n, nullptr);
+    if (n > file_size)  // a crafted size must not turn into a huge allocation
+      io.fail(fmt::format("entry '{}' claims {} bytes, more than the file holds", name, n));
     std::vector<std::uint8_t> bytes(n);
     if (n > 0)
       io.check(H5Dread(ds, H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data()),
@@ -203,6 +218,39 @@ Archive read_checkpoint(const std::filesystem::path& path, CheckpointInfo* info_
   }
   if (info_out) *info_out = info;
   return a;
+}
+
+void put_case_fingerprint(Archive& a,
+                          const std::vector<std::pair<std::string, std::string>>& fingerprint) {
+  for (const auto& [section, hash] : fingerprint)
+    a.put("case/" + section, std::vector<char>(hash.begin(), hash.end()));
+}
+
+void check_case_fingerprint(const Archive& a,
+                            const std::vector<std::pair<std::string, std::string>>& fingerprint,
+                            const std::filesystem::path& checkpoint) {
+  std::map<std::string, std::string> saved, now(fingerprint.begin(), fingerprint.end());
+  for (const auto& [name, bytes] : a.entries())
+    if (name.starts_with("case/")) saved[name.substr(5)] = std::string(bytes.begin(), bytes.end());
+  if (saved.empty())
+    throw InputError(checkpoint.string(), "", 0,
+                     "the checkpoint carries no fingerprint of its case and cannot be checked "
+                     "against this case file");
+  std::vector<std::string> differ;
+  for (const auto& [section, hash] : now) {
+    auto it = saved.find(section);
+    if (it == saved.end())
+      differ.push_back(fmt::format("[{}] is new", section));
+    else if (it->second != hash)
+      differ.push_back(fmt::format("[{}] differs", section));
+  }
+  for (const auto& [section, hash] : saved)
+    if (!now.count(section)) differ.push_back(fmt::format("[{}] was removed", section));
+  if (!differ.empty())
+    throw InputError(checkpoint.string(), "", 0,
+                     fmt::format("the checkpoint belongs to another case: {} (only "
+                                 "simulation.end_time and [output] may change on a restart)",
+                                 fmt::join(differ, ", ")));
 }
 
 }  // namespace comminute::io

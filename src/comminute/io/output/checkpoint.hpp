@@ -12,12 +12,14 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "comminute/core/archive.hpp"
 
 namespace comminute::io {
 
-inline constexpr int checkpoint_format_version = 2;  // 2: per-contact state by slot
+inline constexpr int checkpoint_format_version = 3;  // 3: case fingerprint, 2: state by slot
 
 struct CheckpointInfo {
   int format_version = checkpoint_format_version;
@@ -31,5 +33,14 @@ struct CheckpointInfo {
 void write_checkpoint(const std::filesystem::path& path, const Archive& a, CheckpointInfo info);
 Archive read_checkpoint(const std::filesystem::path& path, CheckpointInfo* info = nullptr);
 CheckpointInfo read_checkpoint_info(const std::filesystem::path& path);
+
+// The case fingerprint as archive entries "case/<section>" (see CaseFile::fingerprint()).
+void put_case_fingerprint(Archive& a,
+                          const std::vector<std::pair<std::string, std::string>>& fingerprint);
+// Throws InputError (file: the checkpoint) naming every section of the case that differs from
+// the one the checkpoint was written for.
+void check_case_fingerprint(const Archive& a,
+                            const std::vector<std::pair<std::string, std::string>>& fingerprint,
+                            const std::filesystem::path& checkpoint);
 
 }  // namespace comminute::io

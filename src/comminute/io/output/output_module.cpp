@@ -115,6 +115,7 @@ void OutputModule::write_checkpoint(Simulation& sim) {
   checkpoint_.done(sim.time, sim.step_count, sim.dt);
   Archive a;
   sim.save(a);
+  put_case_fingerprint(a, options_.case_fingerprint);
   CheckpointInfo info;
   info.time = sim.time;
   info.step = sim.step_count;
@@ -179,7 +180,7 @@ void OutputModule::load(const Archive& a) {
   particles_.set_state(s[0], s[1]);
   timeseries_.set_state(s[2], s[3]);
   checkpoint_.set_state(s[4], s[5]);
-  extent_ = a.get<double>("output/wall_extent").at(0);
+  extent_ = a.get_value<double>("output/wall_extent");
   const std::string prefix = "output/series/";
   loaded_sources_.clear();
   for (const auto& [name, bytes] : a.entries())
@@ -188,7 +189,7 @@ void OutputModule::load(const Archive& a) {
       if (v.size() != 2) throw Error("checkpoint entry '" + name + "' has a wrong size");
       loaded_sources_[name.substr(prefix.size())] = std::move(v);
     }
-  resume_time_ = a.get<double>("sim/time").at(0);
+  resume_time_ = a.get_value<double>("sim/time");
   sources_.clear();
   started_ = false;
 }

@@ -1,0 +1,52 @@
+#pragma once
+// Settings the breakage module hands to its collaborators (stressing events, fragment growth,
+// replacement): per-material breakage settings, the module's options and the per-particle fields
+// the module registers for all of them.
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "comminute/breakage/criteria/breakage_criterion.hpp"
+#include "comminute/breakage/placement/placement_model.hpp"
+#include "comminute/breakage/progeny/progeny_sizes.hpp"
+#include "comminute/breakage/progeny/t10_progeny.hpp"
+
+namespace comminute::breakage {
+
+// Breakage settings of one material.
+struct MaterialBreakage {
+  std::unique_ptr<BreakageCriterion> criterion;
+  std::unique_ptr<ProgenyModel> progeny = std::make_unique<T10Progeny>(T10Progeny::illustrative());
+  double reference_energy = -1;      // J/kg, E50b for t10 when the criterion has no median
+  double min_breakable_size = 0;     // m, smaller particles never break
+  double min_fragment_size = 0;      // m, smaller fragments become fines
+  double min_fragment_ratio = 0.05;  // fragments below this fraction of the parent diameter: fines
+  FinesRule fines = FinesRule::particles;
+  double release_fraction = 0;  // eta: fraction of the absorbed energy given as radial speed
+};
+
+// Settings of material k at [k], or empty (material k never breaks).
+using BreakageMaterials = std::vector<std::optional<MaterialBreakage>>;
+
+struct BreakageOptions {
+  PlacementOptions placement;  // of the default placement model when placement_model is empty
+  std::shared_ptr<const FragmentPlacement> placement_model;
+  double growth_overlap_ratio = 0.001;  // largest overlap growth may create, fraction of the
+                                        // smaller radius (each growth step pumps in U(eps))
+  double growth_step = 0.005;    // largest radius increment per step, fraction of the final radius
+  int event_end_steps = 20;      // steps without new loading that end a stressing event
+  int replacement_interval = 1;  // replace broken parents every this many steps (batched; each
+                                 // replacement makes the engine rebuild its neighbour list)
+  bool log_all_events = false;   // also log events that did not break (probability plots)
+  double output_interval = 0;    // s between ledger rows / table rewrites (0: every 1000 steps)
+};
+
+// Indices of the per-particle fields every collaborator reads.
+struct BreakageFields {
+  std::size_t initialized = 0;  // 1 once strength is drawn
+  std::size_t generation = 0;   // 0 for particles of the initial set
+  std::size_t target = 0;       // m, final radius while growing (0 otherwise)
+};
+
+}  // namespace comminute::breakage

@@ -1,0 +1,58 @@
+#pragma once
+// The breakage event log: one record per logged stressing event (every breakage; with
+// log_all_events also the events that did not break) and the event and breakage counters.
+// It writes nothing: BreakageSeries turns it into tables. Checkpointed as breakage/log and
+// breakage/counters.
+#include <cstdint>
+#include <vector>
+
+#include "comminute/core/archive.hpp"
+
+namespace comminute::breakage {
+
+// One row of the event log (SI units; strength in the criterion's unit).
+struct EventRecord {
+  double time = 0;  // s
+  std::uint64_t parent_id = 0;
+  std::uint32_t material = 0;
+  std::uint32_t generation = 0;  // 0 for particles of the initial set
+  double diameter = 0;           // m
+  double mass = 0;               // kg, of the parent
+  double specific_energy = 0;    // J/kg absorbed in the event
+  double peak_force = 0;         // N
+  double strength = 0;           // J/kg (energy criteria) or N (force criteria) before the event
+  double damage_before = 0;      // accumulated damage before the event
+  std::uint32_t broken = 0;      // 1 if it broke
+  std::uint32_t fragments = 0;   // resolved fragments
+  std::uint32_t fines_particles = 0;
+  std::uint32_t reserved = 0;  // explicit padding: checkpoint bytes are fully initialised
+  double fines_mass = 0;       // kg booked as mass
+  double t10 = 0;              // %
+};
+static_assert(sizeof(EventRecord) == 13 * 8, "EventRecord must have no padding (checkpoints)");
+
+class EventLog {
+ public:
+  // A stressing event ended (broken or not).
+  void count_event() { ++events_; }
+  // An event that did not break (logged only with log_all_events).
+  void add(const EventRecord& r) { records_.push_back(r); }
+  // A parent replaced by its fragments.
+  void add_breakage(const EventRecord& r) {
+    ++breakages_;
+    records_.push_back(r);
+  }
+
+  const std::vector<EventRecord>& records() const { return records_; }
+  std::uint64_t breakages() const { return breakages_; }
+  std::uint64_t events() const { return events_; }
+
+  void save(Archive& a) const;
+  void load(const Archive& a);
+
+ private:
+  std::vector<EventRecord> records_;
+  std::uint64_t breakages_ = 0, events_ = 0;
+};
+
+}  // namespace comminute::breakage

@@ -1,0 +1,120 @@
+#include "comminute/breakage/fragment_growth.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+#include "comminute/breakage/breakage_ledger.hpp"
+#include "comminute/breakage/contact_at_rest.hpp"
+#include "comminute/breakage/placement/fragment_placement.hpp"
+#include "comminute/core/parallel.hpp"
+#include "comminute/engine/simulation.hpp"
+
+namespace comminute::breakage {
+
+void FragmentGrowth::recount(const ParticleStore& p) {
+  pending_ = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) pending_ += (p.flags[i] & pflag::growing) ? 1 : 0;
+}
+
+void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger& ledger) {
+  auto& p = sim.particles;
+  const std::size_t n = p.size();
+  const double eps = eps_;
+  std::vector<double> limit(n, 0.0);
+  const auto& target = p.field(f_target);
+  for (std::size_t i = 0; i < n; ++i)
+    if (p.flags[i] & pflag::growing) limit[i] = target[i];
+  const auto& nl = sim.pairs();
+  parallel_scatter(
+      nl.size(), limit, std::numeric_limits<double>::infinity(),
+      [&](std::size_t k, std::vector<double>& lim) {
+        const std::uint32_t i = nl.first[k], j = nl.second[k];
+        const bool gi = p.flags[i] & pflag::growing, gj = p.flags[j] & pflag::growing;
+        if (!gi && !gj) return;
+        if (gi && gj) {  // two growing spheres share the room up to the allowed overlap
+          const double room = norm(p.x[i] - p.x[j]) - p.radius[i] - p.radius[j] +
+                              eps * std::min(p.radius[i], p.radius[j]);
+          lim[i] = std::min(lim[i], p.radius[i] + 0.5 * room);
+          lim[j] = std::min(lim[j], p.radius[j] + 0.5 * room);
+        } else if (gi) {
+          lim[i] = std::min(lim[i], radius_allowed(p.x[i], target[i], {p.x[j], p.radius[j]}, eps));
+        } else {
+          lim[j] = std::min(lim[j], radius_allowed(p.x[j], target[j], {p.x[i], p.radius[i]}, eps));
+        }
+      },
+      [](double a, double b) { return std::min(a, b); });
+  const std::vector<double> r_before = p.radius;
+  // Growth at fixed positions raises the overlaps of the growing spheres: that elastic energy
+  // comes from nowhere, so it is booked (as negative removed energy) to keep the balance closed.
+  struct GrowthTally {
+    double wall_energy = 0;     // J, created in wall contacts
+    std::size_t completed = 0;  // fragments that reached full size
+    bool rebuild = false;       // some fragment used up its reach margin
+  };
+  std::vector<GrowthTally> tally(1);
+  parallel_scatter(
+      n, tally, GrowthTally{},
+      [&](std::size_t i, std::vector<GrowthTally>& acc) {
+        // blocked by a neighbour already: no growth this step (spares the wall look-ups)
+        if (!(p.flags[i] & pflag::growing) || limit[i] <= p.radius[i]) return;
+        thread_local std::vector<WallContact> found;
+        for (const auto& w : sim.walls) {
+          found.clear();
+          w->contacts(p.x[i], p.radius[i], target[i], found);
+          for (const auto& c : found)  // distance to the wall = r - overlap; keep overlap <= eps r
+            limit[i] = std::min(limit[i], (p.radius[i] - c.overlap) / (1.0 - eps));
+        }
+        double r_new =
+            std::min({target[i], p.radius[i] + step_ * target[i], std::max(p.radius[i], limit[i])});
+        // the pair list covers unlisted spheres only up to the reach margin: grow within it,
+        // and have the list rebuilt once it is used up
+        const double margin = std::max(0.0, sim.reach_margin(i));
+        if (r_new - p.radius[i] >= margin) {
+          r_new = p.radius[i] + margin;
+          acc[0].rebuild = true;
+        }
+        if (r_new >= target[i]) {
+          r_new = target[i];
+          p.flags[i] &= ~pflag::growing;
+          p.field(f_target)[i] = 0;
+          ++acc[0].completed;
+        }
+        p.radius[i] = r_new;
+        if (r_new == r_before[i]) return;
+        for (const auto& w : sim.walls) {
+          found.clear();
+          w->contacts(p.x[i], r_new, 0.0, found);
+          for (const auto& c : found)
+            acc[0].wall_energy +=
+                overlap_energy(sim, c.overlap, r_new, p.mass[i], p.material[i], 0, 0, w->material) -
+                overlap_energy(sim, c.overlap - (r_new - r_before[i]), r_before[i], p.mass[i],
+                               p.material[i], 0, 0, w->material);
+        }
+      },
+      [](GrowthTally a, const GrowthTally& b) {
+        return GrowthTally{a.wall_energy + b.wall_energy, a.completed + b.completed,
+                           a.rebuild || b.rebuild};
+      });
+  pending_ -= tally[0].completed;
+  std::vector<double> pair_energy(1, 0.0);  // J, summed per thread
+  parallel_scatter(
+      nl.size(), pair_energy, 0.0,
+      [&](std::size_t k, std::vector<double>& sum) {
+        const std::uint32_t i = nl.first[k], j = nl.second[k];
+        if (p.radius[i] == r_before[i] && p.radius[j] == r_before[j]) return;  // nothing grew
+        const double dist = norm(p.x[i] - p.x[j]);
+        const double before = r_before[i] + r_before[j] - dist,
+                     after = p.radius[i] + p.radius[j] - dist;
+        if (after <= 0) return;
+        sum[0] += overlap_energy(sim, after, p.radius[i], p.mass[i], p.material[i], p.radius[j],
+                                 p.mass[j], p.material[j]) -
+                  overlap_energy(sim, before, r_before[i], p.mass[i], p.material[i], r_before[j],
+                                 p.mass[j], p.material[j]);
+      },
+      [](double a, double b) { return a + b; });
+  ledger.create(sim, pair_energy[0] + tally[0].wall_energy);
+  if (tally[0].rebuild) sim.particles_changed();
+}
+
+}  // namespace comminute::breakage

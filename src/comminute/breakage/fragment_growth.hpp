@@ -1,0 +1,38 @@
+#pragma once
+// Growth of fragments towards their full radius (docs/breakage.md). A fragment placed smaller than
+// its final size carries pflag::growing and its final radius in the target field; each step it
+// grows by at most growth_step of that radius, capped so that it creates at most an overlap of
+// growth_overlap_ratio times the smaller radius with neighbours and walls, and within the pair
+// list's reach margin. The elastic energy growth creates is booked in the ledger.
+#include <cstddef>
+
+namespace comminute {
+class Simulation;
+class ParticleStore;
+}  // namespace comminute
+
+namespace comminute::breakage {
+
+class BreakageLedger;
+
+class FragmentGrowth {
+ public:
+  FragmentGrowth(double overlap_ratio, double step) : eps_(overlap_ratio), step_(step) {}
+
+  // Counts the growing particles (after setup or a checkpoint).
+  void recount(const ParticleStore& p);
+  void started() { ++pending_; }  // a fragment placed smaller than its final size
+  void dropped() { --pending_; }  // a growing fragment broke
+  // Fragments still growing to full size.
+  std::size_t pending() const { return pending_; }
+
+  // One growth step of every growing particle; `target` is the index of the target-radius field.
+  void grow(Simulation& sim, std::size_t target, BreakageLedger& ledger);
+
+ private:
+  double eps_;   // largest overlap growth may create, fraction of the smaller radius
+  double step_;  // largest radius increment per step, fraction of the final radius
+  std::size_t pending_ = 0;
+};
+
+}  // namespace comminute::breakage

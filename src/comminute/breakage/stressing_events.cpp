@@ -1,0 +1,148 @@
+#include "comminute/breakage/stressing_events.hpp"
+
+#include <algorithm>
+
+#include "comminute/core/parallel.hpp"
+#include "comminute/engine/simulation.hpp"
+#include "comminute/fracture/energy_share.hpp"
+
+namespace comminute::breakage {
+
+void StressingEvents::register_fields(ParticleStore& p) {
+  f_in_event_ = p.add_field("breakage.in_event", 0.0);
+  f_energy_ = p.add_field("breakage.event_energy", 0.0);  // J/kg
+  f_force_ = p.add_field("breakage.event_force", 0.0);    // N
+  f_baseline_ = p.add_field("breakage.baseline", 0.0);    // J/kg
+  f_quiet_ = p.add_field("breakage.quiet_steps", 0.0);
+}
+
+void StressingEvents::configure(const Simulation& sim) {
+  n_materials_ = sim.materials.size();
+  share_.assign(n_materials_ * n_materials_, 0.5);
+  for (std::size_t a = 0; a < n_materials_; ++a)
+    for (std::size_t b = 0; b < n_materials_; ++b) {
+      const Material& ma = sim.materials.material(static_cast<std::uint16_t>(a));
+      const Material& mb = sim.materials.material(static_cast<std::uint16_t>(b));
+      share_[a * n_materials_ + b] = fracture::energy_share(
+          fracture::plane_strain_modulus(ma.youngs_modulus, ma.poisson_ratio),
+          fracture::plane_strain_modulus(mb.youngs_modulus, mb.poisson_ratio));
+    }
+}
+
+void StressingEvents::clear(ParticleStore& p, std::size_t s) const {
+  p.field(f_in_event_)[s] = p.field(f_energy_)[s] = p.field(f_force_)[s] = 0;
+  p.field(f_baseline_)[s] = p.field(f_quiet_)[s] = 0;
+}
+
+void StressingEvents::gather_loads(const Simulation& sim) {
+  const auto& p = sim.particles;
+  const std::size_t n = p.size();
+  contact_load_.assign(n, ContactLoad{});
+  const auto& nl = sim.pairs();
+  const ContactStateStore& pairs = sim.pair_state();
+  const LoadingRecord& loading = *sim.contacts().loading();
+  parallel_scatter(
+      nl.size(), contact_load_, ContactLoad{},
+      [&](std::size_t k, std::vector<ContactLoad>& acc) {
+        if (!pairs.active[k]) return;
+        const std::uint32_t i = nl.first[k], j = nl.second[k];
+        const StateRef h = pairs.at(k);
+        const std::size_t a = p.material[i], b = p.material[j];
+        acc[i].work += share_[a * n_materials_ + b] * loading.loading_work(h);
+        acc[j].work += share_[b * n_materials_ + a] * loading.loading_work(h);
+        acc[i].force += loading.normal_force(h);
+        acc[j].force += loading.normal_force(h);
+      },
+      [](ContactLoad x, const ContactLoad& y) {
+        return ContactLoad{x.work + y.work, x.force + y.force};
+      });
+  for (const auto& c : sim.wall_contacts()) {
+    const std::size_t a = p.material[c.particle], b = sim.walls[c.wall]->material;
+    const StateRef h = sim.wall_state().at(c.candidate);
+    contact_load_[c.particle].work += share_[a * n_materials_ + b] * loading.loading_work(h);
+    contact_load_[c.particle].force += loading.normal_force(h);
+  }
+}
+
+void StressingEvents::assess(Simulation& sim, const BreakageMaterials& materials,
+                             const BreakageFields& f, EventLog& log, const BrokeFn& on_break) {
+  auto& p = sim.particles;
+  const std::size_t n = p.size();
+  auto& in_event = p.field(f_in_event_);
+  auto& energy = p.field(f_energy_);
+  auto& force = p.field(f_force_);
+  auto& baseline = p.field(f_baseline_);
+  auto& quiet = p.field(f_quiet_);
+  const auto& target = p.field(f.target);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& mat = materials[p.material[i]];
+    if (!mat || (p.flags[i] & (pflag::fixed | pflag::unbreakable | pflag::remove))) continue;
+    // A growing fragment already carries its full mass and transmits real contact forces: it is
+    // assessed at its final size (the overlaps growth creates are capped, see
+    // FragmentGrowth::grow).
+    const double d = 2 * std::max(p.radius[i], target[i]);
+    const double s = contact_load_[i].work / p.mass[i];  // J/kg
+    if (d < mat->min_breakable_size) {
+      baseline[i] = s;
+      continue;
+    }
+    const BreakageCriterion& crit = *mat->criterion;
+    auto record = [&] {  // the event as it stands, for the log
+      EventRecord r;
+      r.time = sim.time;
+      r.parent_id = p.id[i];
+      r.material = p.material[i];
+      r.generation = static_cast<std::uint32_t>(p.field(f.generation)[i]);
+      r.diameter = d;
+      r.mass = p.mass[i];
+      r.specific_energy = energy[i];
+      r.peak_force = force[i];
+      r.strength = crit.strength(p, i, d);
+      r.damage_before = crit.damage(p, i);
+      return r;
+    };
+    auto end_event = [&](bool broke) {
+      log.count_event();
+      if (log_all_ && !broke) log.add(record());
+      if (!broke) crit.survive(p, i, d, {energy[i], force[i]});
+      in_event[i] = 0;
+      energy[i] = force[i] = 0;
+      quiet[i] = 0;
+    };
+    if (s <= 0) {  // no loaded contact: any event is over
+      if (in_event[i] != 0) end_event(false);
+      baseline[i] = 0;
+      continue;
+    }
+    if (in_event[i] == 0) {
+      if (s <= baseline[i] * (1 + 1e-12)) {
+        baseline[i] = s;  // contacts left or unloading: lower the baseline with S
+        continue;
+      }
+      in_event[i] = 1;
+      energy[i] = force[i] = 0;
+      quiet[i] = 0;
+    }
+    const double e = s - baseline[i];
+    if (e > energy[i]) {
+      energy[i] = e;
+      quiet[i] = 0;
+    } else {
+      quiet[i] += 1;
+    }
+    force[i] = std::max(force[i], contact_load_[i].force);
+    const StressingEvent ev{energy[i], force[i]};
+    if (crit.breaks(p, i, d, ev)) {
+      EventRecord r = record();
+      r.broken = 1;
+      on_break(i, r);
+      end_event(true);
+      p.flags[i] |= pflag::unbreakable;  // until it is replaced at the end of the step
+    } else if (quiet[i] >= end_steps_) {
+      end_event(false);
+      baseline[i] = s;
+    }
+  }
+}
+
+}  // namespace comminute::breakage

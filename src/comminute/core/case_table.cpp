@@ -16,17 +16,11 @@
 #include <map>
 #include <sstream>
 
+#include "comminute/core/case_file_state.hpp"
+#include "comminute/core/case_text.hpp"
 #include "comminute/core/error.hpp"
 
 namespace comminute {
-
-struct CaseFileState {
-  std::filesystem::path path;
-  toml::table doc;
-  std::set<std::string> used;
-  std::set<std::string> asked;  // every key a reader looked for, present or not (suggestions)
-  std::map<std::string, std::filesystem::path> files;  // data files named, by key path
-};
 
 namespace {
 
@@ -342,146 +336,6 @@ std::vector<CaseTable> CaseTable::tables(std::string_view key) const {
   return out;
 }
 
-namespace {
-
-// toml++ 3.3.0 (Debian 12's) has undefined behaviour on some malformed non-ASCII input (fixed
-// upstream in 3.4): the text must be well-formed UTF-8 (no overlong forms, surrogates or code
-// points above U+10FFFF) and free of NUL and other control characters but tab, CR and LF before
-// the parser sees it.
-void check_text(std::string_view text, const std::string& name) {
-  long line = 1;
-  for (std::size_t i = 0; i < text.size();) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    if (c == '\n') ++line;
-    if (c < 0x80) {
-      if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7f)
-        throw InputError(name, "", line,
-                         fmt::format("control character 0x{:02x} in the text", unsigned(c)));
-      ++i;
-      continue;
-    }
-    std::size_t len = 0;
-    std::uint32_t cp = 0;
-    if (c >= 0xc2 && c <= 0xdf) {
-      len = 2;
-      cp = c & 0x1fu;
-    } else if (c >= 0xe0 && c <= 0xef) {
-      len = 3;
-      cp = c & 0x0fu;
-    } else if (c >= 0xf0 && c <= 0xf4) {
-      len = 4;
-      cp = c & 0x07u;
-    }
-    bool ok = len > 0 && i + len <= text.size();
-    for (std::size_t k = 1; ok && k < len; ++k) {
-      const auto cc = static_cast<unsigned char>(text[i + k]);
-      ok = (cc & 0xc0u) == 0x80u;
-      cp = (cp << 6) | (cc & 0x3fu);
-    }
-    if (ok)
-      ok = !(len == 3 && cp < 0x800) && !(len == 4 && (cp < 0x10000 || cp > 0x10ffff)) &&
-           !(cp >= 0xd800 && cp <= 0xdfff);
-    if (!ok) throw InputError(name, "", line, "the text is not valid UTF-8");
-    i += len;
-  }
-}
-
-// toml++ 3.3.0 classifies characters outside strings (whitespace, value ends) with a table that
-// reaches __builtin_unreachable for many code points (U+00A1-U+0499, U+2F3E-U+3337): undefined
-// behaviour, fixed upstream in 3.4. TOML allows non-ASCII text only in strings and comments, so
-// anything else is refused before the parser sees it, as is a non-ASCII character after a
-// backslash in a string (an escape toml++ would classify the same way).
-void check_non_ascii_placement(std::string_view text, const std::string& name) {
-  enum class In { code, comment, basic, literal, ml_basic, ml_literal } in = In::code;
-  long line = 1;
-  auto at = [&](std::size_t i, std::string_view what) {
-    return text.substr(i, what.size()) == what;
-  };
-  auto refuse = [&](const char* what) { throw InputError(name, "", line, what); };
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    const bool non_ascii = (static_cast<unsigned char>(c) & 0x80u) != 0;
-    if (c == '\n') ++line;
-    switch (in) {
-      case In::code:
-        if (non_ascii) refuse("non-ASCII character outside a string or comment");
-        if (c == '#') in = In::comment;
-        if (c == '"') {
-          if (at(i, "\"\"\"")) {
-            in = In::ml_basic;
-            i += 2;
-          } else {
-            in = In::basic;
-          }
-        }
-        if (c == '\'') {
-          if (at(i, "'''")) {
-            in = In::ml_literal;
-            i += 2;
-          } else {
-            in = In::literal;
-          }
-        }
-        break;
-      case In::comment:
-        if (c == '\n') in = In::code;
-        break;
-      case In::basic:
-      case In::ml_basic:
-        if (c == '\\') {
-          // an escape, or a line-ending backslash: the next non-blank character is classified
-          std::size_t j = i + 1;
-          while (in == In::ml_basic && j < text.size() &&
-                 (text[j] == ' ' || text[j] == '\t' || text[j] == '\r' || text[j] == '\n'))
-            ++j;
-          if (j < text.size() && (static_cast<unsigned char>(text[j]) & 0x80u))
-            refuse("non-ASCII character after a backslash in a string");
-          if (j == i + 1 && i + 1 < text.size()) {  // the escaped character
-            if (text[i + 1] == '\n') ++line;
-            ++i;
-          }
-          break;
-        }
-        if (in == In::basic && (c == '"' || c == '\n')) in = In::code;
-        if (in == In::ml_basic && at(i, "\"\"\"")) {
-          while (i + 1 < text.size() && text[i + 1] == '"') ++i;  // up to two quotes of content
-          in = In::code;
-        }
-        break;
-      case In::literal:
-        if (c == '\'' || c == '\n') in = In::code;
-        break;
-      case In::ml_literal:
-        if (at(i, "'''")) {
-          while (i + 1 < text.size() && text[i + 1] == '\'') ++i;
-          in = In::code;
-        }
-        break;
-    }
-  }
-}
-
-// Keys are names: a quoted key holding '.', '[' or ']' (e.g. "simulation.end_time" = 5) would
-// look like a key path and be mistaken for another key; an empty key names nothing.
-void check_keys(const toml::table& t, const std::string& name, const std::string& base = "") {
-  for (const auto& [k, v] : t) {
-    const std::string_view key = k.str();
-    const std::string path = join_path(base, key);
-    if (key.empty() || key.find_first_of(".[]") != std::string_view::npos)
-      throw InputError(name, path, static_cast<long>(k.source().begin.line),
-                       key.empty() ? "empty key"
-                                   : "a key may not contain '.', '[' or ']' (a quoted dotted key "
-                                     "is not a key path: write [table] and key = value)");
-    if (auto sub = v.as_table()) check_keys(*sub, name, path);
-    if (auto arr = v.as_array())
-      for (std::size_t i = 0; i < arr->size(); ++i)
-        if (auto et = arr->get(i)->as_table())
-          check_keys(*et, name, fmt::format("{}[{}]", path, i));
-  }
-}
-
-}  // namespace
-
 CaseFile CaseFile::load(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path)) throw InputError(path.string(), "", 0, "file not found");
   if (std::filesystem::is_directory(path))
@@ -496,92 +350,17 @@ CaseFile CaseFile::load(const std::filesystem::path& path) {
 CaseFile CaseFile::parse(std::string_view text, const std::string& name) {
   auto st = std::make_shared<CaseFileState>();
   st->path = name;
-  check_text(text, name);
-  check_non_ascii_placement(text, name);
+  check_case_text(text, name);
   try {
     st->doc = toml::parse(text, name);
   } catch (const toml::parse_error& e) {
     throw InputError(name, "", static_cast<long>(e.source().begin.line),
                      fmt::format("TOML syntax error: {}", e.description()));
   }
-  check_keys(st->doc, name);
+  check_case_keys(st->doc, name);
   CaseFile f;
   f.state_ = st;
   return f;
-}
-
-namespace {
-
-// A canonical text of a TOML value for fingerprints: keys in name order, numbers in their shortest
-// exact form, strings with their length. (toml++ 3.3.0's own formatter has undefined behaviour on
-// floats below 1, so it is not used.)
-void canonical(const toml::node& n, std::string& out) {
-  if (auto t = n.as_table()) {
-    out += '{';
-    for (const auto& [k, v] : *t) {
-      out += fmt::format("{}:{}=", k.str().size(), k.str());
-      canonical(v, out);
-      out += ';';
-    }
-    out += '}';
-  } else if (auto a = n.as_array()) {
-    out += '[';
-    for (const auto& e : *a) {
-      canonical(e, out);
-      out += ',';
-    }
-    out += ']';
-  } else if (auto str = n.as_string()) {
-    out += fmt::format("s{}:{}", str->get().size(), str->get());
-  } else if (auto i = n.as_integer()) {
-    out += fmt::format("i{}", i->get());
-  } else if (auto f = n.as_floating_point()) {
-    out += fmt::format("f{}", f->get());
-  } else if (auto b = n.as_boolean()) {
-    out += b->get() ? "b1" : "b0";
-  } else if (auto d = n.as_date()) {
-    const toml::date& v = d->get();
-    out += fmt::format("d{}-{}-{}", v.year, v.month, v.day);
-  } else if (auto tm = n.as_time()) {
-    const toml::time& v = tm->get();
-    out += fmt::format("t{}:{}:{}.{}", v.hour, v.minute, v.second, v.nanosecond);
-  } else if (auto dt = n.as_date_time()) {
-    const toml::date_time& v = dt->get();
-    out += fmt::format("D{}-{}-{}T{}:{}:{}.{}Z{}", v.date.year, v.date.month, v.date.day,
-                       v.time.hour, v.time.minute, v.time.second, v.time.nanosecond,
-                       v.offset ? v.offset->minutes : 100000);
-  }
-}
-
-}  // namespace
-
-std::vector<std::pair<std::string, std::string>> CaseFile::fingerprint() const {
-  std::vector<std::pair<std::string, std::string>> out;
-  auto mix = [](std::uint64_t h, std::string_view bytes) {
-    for (char c : bytes) h = (h ^ static_cast<unsigned char>(c)) * 0x100000001b3ull;
-    return h;
-  };
-  for (const auto& [k, v] : state_->doc) {
-    const std::string key(k.str());
-    if (key == "output") continue;
-    std::string text;
-    if (key == "simulation" && v.is_table()) {
-      toml::table t = *v.as_table();
-      t.erase("end_time");
-      canonical(t, text);
-    } else {
-      canonical(v, text);
-    }
-    std::uint64_t h = mix(0xcbf29ce484222325ull, text);
-    for (const auto& [kp, file] : state_->files) {
-      if (kp != key && !kp.starts_with(key + ".") && !kp.starts_with(key + "[")) continue;
-      std::ifstream in(file, std::ios::binary);
-      const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-      h = mix(mix(h, kp), bytes);
-    }
-    out.emplace_back(key, fmt::format("{:016x}", h));
-  }
-  return out;
 }
 
 CaseTable CaseFile::root() const {

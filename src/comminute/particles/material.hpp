@@ -21,6 +21,7 @@ struct PairInput {
   double rolling_friction = 0.0;         // rolling resistance coefficient (dimensionless)
   double cohesion_energy_density = 0.0;  // J/m3, SJKR cohesion (LIGGGHTS' cohesionEnergyDensity)
   double rolling_damping = 0.0;          // viscous damping ratio of the EPSD rolling model
+  double surface_energy = 0.0;           // J/m2, work of adhesion Gamma of the JKR cohesion
 };
 
 // PairInput plus the derived constants the contact laws use.

@@ -38,6 +38,7 @@ PairInput read_pair(const CaseTable& t, const PairInput& base) {
   p.rolling_damping = t.number("rolling_damping", Limits::non_negative(), base.rolling_damping);
   p.cohesion_energy_density =
       t.number("cohesion_energy_density", Limits::non_negative(), base.cohesion_energy_density);
+  p.surface_energy = t.number("surface_energy", Limits::non_negative(), base.surface_energy);
   return p;
 }
 

@@ -211,3 +211,22 @@ TEST(Criteria, TavaresAnswersTheMedianOfTheParticlesThatBreak) {
                    dist.quantile(dist.cdf(e) / 2));
   EXPECT_DOUBLE_EQ(c.t10_median_energy(d, e, comminute::fracture::E50bRule::class_median), 100.0);
 }
+
+// Issue 8, point 3: the DEM criterion reads damage_form through the shared reader; the default is
+// the (1 - D) form (Tavares, KONA 2017, eq. 20), "no_factor" selects the former one.
+TEST(Criteria, TavaresReadsTheDamageForm) {
+  Material m{"rock", 2700, 70e9, 0.25};
+  const CaseFile dflt = CaseFile::parse("e_inf = 100\nsigma = 0.8\n");
+  const CaseFile old = CaseFile::parse("e_inf = 100\nsigma = 0.8\ndamage_form = \"no_factor\"\n");
+  auto a = CriterionRegistry::create("tavares", dflt.root(), m);
+  auto b = CriterionRegistry::create("tavares", old.root(), m);
+  EXPECT_EQ(dynamic_cast<const Tavares&>(*a).parameters().damage.form,
+            comminute::fracture::DamageForm::one_minus_d);
+  EXPECT_EQ(dynamic_cast<const Tavares&>(*b).parameters().damage.form,
+            comminute::fracture::DamageForm::no_factor);
+  EXPECT_THROW(
+      CriterionRegistry::create(
+          "tavares", CaseFile::parse("e_inf = 100\nsigma = 0.8\ndamage_form = \"other\"\n").root(),
+          m),
+      InputError);
+}

@@ -21,7 +21,7 @@ inline breakage::MaterialBreakage weak_material(double e_inf, double sigma, doub
   breakage::TavaresParameters tp;
   tp.size_effect = {e_inf, 0.0, 1.0, 1.0};
   tp.sigma = sigma;
-  tp.gamma = 3.0;
+  tp.damage.gamma = 3.0;
   breakage::MaterialBreakage m;
   m.criterion = std::make_unique<breakage::Tavares>(tp);
   m.min_breakable_size = min_breakable;

@@ -10,6 +10,7 @@ struct DemSetup {
   std::string law = "hertz_mindlin";
   double restitution = 0.5;
   double friction = 0.0;
+  double dynamic_friction = -1.0;  // < 0: the same as friction
   double rolling_friction = 0.0;
   double cohesion = 0.0;          // J/m3
   double linear_stiffness = 1e5;  // N/m (linear law)
@@ -24,6 +25,7 @@ inline std::unique_ptr<Simulation> make_simulation(const DemSetup& s) {
   PairInput pi;
   pi.restitution = s.restitution;
   pi.friction = s.friction;
+  pi.dynamic_friction = s.dynamic_friction;
   pi.rolling_friction = s.rolling_friction;
   pi.cohesion_energy_density = s.cohesion;
   sim->materials.set_pair(0, 0, pi);

@@ -12,6 +12,7 @@
 #include "comminute/breakage/criteria/peak_force.hpp"
 #include "comminute/breakage/criteria/tavares.hpp"
 #include "comminute/breakage/criteria/vogel_peukert.hpp"
+#include "comminute/breakage/progeny/progeny_model.hpp"
 #include "comminute/core/case_table.hpp"
 #include "comminute/core/error.hpp"
 
@@ -109,7 +110,8 @@ TEST(DamageAccumulation, RepeatedImpactsFollowHandIteration) {
   TavaresParameters tp;
   tp.size_effect = {100.0, 0.0, 1.0, 1.0};
   tp.sigma = 0.5;
-  tp.gamma = 3.0;
+  tp.damage = {3.0, comminute::fracture::DamageForm::no_factor};  // the hand iteration below is the
+                                                                  // no_factor form
   Tavares c(tp);
   ParticleStore p;
   c.attach(p);
@@ -186,4 +188,45 @@ TEST(Criteria, RenamedKeysNameTheirNewKey) {
       EXPECT_NE(what.find("case.toml"), std::string::npos) << what;
     }
   }
+}
+
+// Issue 8, point 2: what DEM t10 evaluation asks for. The t10 progeny reads e50b ("breaking" by
+// default) and the Tavares criterion answers E50b of eq. P1b for its own distribution, or E50(d)
+// with e50b = "class"; criteria without a distribution keep median_fracture_energy(d).
+TEST(Criteria, TavaresAnswersTheMedianOfTheParticlesThatBreak) {
+  const char* t10 = "A = 50\nb_prime = 1\nalpha = [1, 1, 1, 1, 1]\nbeta = [2, 2, 1, 1, 1]\n";
+  const CaseFile dflt = CaseFile::parse(t10);
+  const CaseFile cls = CaseFile::parse(std::string(t10) + "e50b = \"class\"\n");
+  EXPECT_EQ(ProgenyRegistry::create("t10", dflt.root())->e50b_rule(),
+            comminute::fracture::E50bRule::breaking);
+  EXPECT_EQ(ProgenyRegistry::create("t10", cls.root())->e50b_rule(),
+            comminute::fracture::E50bRule::class_median);
+  TavaresParameters tp;
+  tp.size_effect = {100.0, 0.0, 1.0, 1.0};
+  tp.sigma = 0.8;
+  const Tavares c(tp);
+  const double d = 0.01, e = 80.0;
+  const auto dist = c.distribution(d);
+  EXPECT_DOUBLE_EQ(c.t10_median_energy(d, e, comminute::fracture::E50bRule::breaking),
+                   dist.quantile(dist.cdf(e) / 2));
+  EXPECT_DOUBLE_EQ(c.t10_median_energy(d, e, comminute::fracture::E50bRule::class_median), 100.0);
+}
+
+// Issue 8, point 3: the DEM criterion reads damage_form through the shared reader; the default is
+// the (1 - D) form (Tavares, KONA 2017, eq. 20), "no_factor" selects the former one.
+TEST(Criteria, TavaresReadsTheDamageForm) {
+  Material m{"rock", 2700, 70e9, 0.25};
+  const CaseFile dflt = CaseFile::parse("e_inf = 100\nsigma = 0.8\n");
+  const CaseFile old = CaseFile::parse("e_inf = 100\nsigma = 0.8\ndamage_form = \"no_factor\"\n");
+  auto a = CriterionRegistry::create("tavares", dflt.root(), m);
+  auto b = CriterionRegistry::create("tavares", old.root(), m);
+  EXPECT_EQ(dynamic_cast<const Tavares&>(*a).parameters().damage.form,
+            comminute::fracture::DamageForm::one_minus_d);
+  EXPECT_EQ(dynamic_cast<const Tavares&>(*b).parameters().damage.form,
+            comminute::fracture::DamageForm::no_factor);
+  EXPECT_THROW(
+      CriterionRegistry::create(
+          "tavares", CaseFile::parse("e_inf = 100\nsigma = 0.8\ndamage_form = \"other\"\n").root(),
+          m),
+      InputError);
 }

@@ -92,6 +92,29 @@ TEST(ProgenySizes, MassClosesExactlyAndFinesAreKept) {
     }
 }
 
+// Issue 8, point 5: a 10 mm parent with a 1 mm minimum has its last class [1, 1.25] mm, narrower
+// than 2^(1/3); closing it with two equal halves gave fragments down to 0.99 mm. Every resolved
+// fragment must now be at least the minimum (relative 1e-12: the last fragment's mass is the
+// remainder of a sum, exact to rounding), and the mass still closes (1e-12 relative).
+TEST(ProgenySizes, NoFragmentBelowTheMinimumSize) {
+  const double d = 0.01, rho = 2700, min_size = 1e-3, mass = sphere_mass(d, rho);
+  T10Model model(illustrative());
+  Rng rng(11, 0);
+  double smallest = d;
+  for (double t10 : {10.0, 20.0, 35.0, 45.0})
+    for (int k = 0; k < 400; ++k) {
+      const ProgenyDistribution dist(d, t10, model.tn(t10));
+      const Progeny pr = draw_progeny(dist, mass, rho, min_size, FinesRule::mass, rng);
+      double sum = pr.fines_mass;
+      for (const auto& f : pr.fragments) {
+        sum += f.mass;
+        smallest = std::min(smallest, f.diameter);
+      }
+      ASSERT_NEAR(sum, mass, 1e-12 * mass);
+    }
+  EXPECT_GE(smallest, min_size * (1 - 1e-12));
+}
+
 TEST(ProgenySizes, MinimumSizeAboveParentGivesAllFines) {
   T10Model m(illustrative());
   Rng rng(1);

@@ -7,6 +7,7 @@
 
 #include "comminute/core/error.hpp"
 #include "comminute/core/units.hpp"
+#include "comminute/fracture/breaking_median.hpp"
 #include "comminute/fracture/damage.hpp"
 #include "comminute/fracture/energy_share.hpp"
 #include "comminute/fracture/fracture_energy_distribution.hpp"
@@ -62,26 +63,87 @@ TEST(FractureEnergy, EnergyShareOracle) {
 }
 
 // One damage law for the DEM criterion and the UFRJ mill: the check values and edge rules both
-// relied on (their two former tests merged; the tighter tolerance kept).
+// rely on, for both forms of eq. D1.
 TEST(Damage, CheckValuesAndEdgeRules) {
+  const auto with = DamageForm::one_minus_d, without = DamageForm::no_factor;
   // Check values of eq. D1 (docs/models.md "Damage"), 6 decimals quoted: tolerance half a unit in
-  // the last place.
-  EXPECT_NEAR(tavares_king_damage(2, 0.5), 0.358610, 0.5e-6);
-  EXPECT_NEAR(tavares_king_damage(3, 0.3), 0.122009, 0.5e-6);
-  EXPECT_NEAR(tavares_king_damage(5, 0.9), 0.531877, 0.5e-6);
-  EXPECT_NEAR(tavares_king_damage(7, 0.99), 0.805857, 0.5e-6);
-  EXPECT_EQ(tavares_king_damage(4, 0.0), 0.0);
-  EXPECT_EQ(tavares_king_damage(5, 0.0), 0.0);
-  EXPECT_LT(tavares_king_damage(5, 1e-3), 1e-5);  // D -> 0 as E_k/E -> 0
-  EXPECT_THROW(tavares_king_damage(4, 1.0), Error);
+  // the last place. Each was confirmed independently by the explicit inverse r(D) below.
+  EXPECT_NEAR(tavares_king_damage(2, 0.5, with), 0.266353, 0.5e-6);
+  EXPECT_NEAR(tavares_king_damage(3, 0.3, with), 0.105705, 0.5e-6);
+  EXPECT_NEAR(tavares_king_damage(5, 0.9, with), 0.243862, 0.5e-6);  // issue 8: 0.244
+  EXPECT_NEAR(tavares_king_damage(7, 0.99, with), 0.234109, 0.5e-6);
+  EXPECT_NEAR(tavares_king_damage(2, 0.5, without), 0.358610, 0.5e-6);
+  EXPECT_NEAR(tavares_king_damage(3, 0.3, without), 0.122009, 0.5e-6);
+  EXPECT_NEAR(tavares_king_damage(5, 0.9, without), 0.531877, 0.5e-6);  // issue 8: 0.532
+  EXPECT_NEAR(tavares_king_damage(7, 0.99, without), 0.805857, 0.5e-6);
+  for (auto form : {with, without}) {
+    EXPECT_EQ(tavares_king_damage(4, 0.0, form), 0.0);
+    EXPECT_EQ(tavares_king_damage(5, 0.0, form), 0.0);
+    EXPECT_LT(tavares_king_damage(5, 1e-3, form), 1e-5);  // D -> 0 as E_k/E -> 0
+    EXPECT_THROW(tavares_king_damage(4, 1.0, form), Error);
+  }
+  EXPECT_EQ(read_damage_law(CaseFile::parse("").root()).form, with);  // the default form
 }
 
-TEST(Damage, RootSatisfiesTheEquation) {
-  for (double g : {1.0, 2.5, 6.0})
-    for (double r : {0.05, 0.5, 0.95}) {
-      const double d = tavares_king_damage(g, r);
-      EXPECT_NEAR(d, std::pow(2 * g / (2 * g - 5 * d + 5) * r, 2 * g / 5), 1e-12);
+// Independent check without any iteration: each form solved for r gives r(D) explicitly,
+//   one_minus_d: r = D^(5/(2g)) (2g - 5D + 5) / (2g (1 - D)),
+//   no_factor:   r = D^(5/(2g)) (2g - 5D + 5) / (2g),
+// so the library must return D for r(D). For no_factor D is taken on the rising branch of r(D)
+// (dr/dD > 0), where it is the smallest root. Tolerance 1e-12: bisection and fixed point stop at
+// 1e-15, and r(D) is well conditioned away from r -> 1.
+TEST(Damage, BothFormsInvertTheExplicitEnergyRatio) {
+  for (double g : {1.0, 2.5, 5.0, 6.0}) {
+    const double a = 5.0 / (2 * g);
+    for (double d : {1e-4, 0.05, 0.2, 0.35}) {
+      const double r1 = std::pow(d, a) * (2 * g - 5 * d + 5) / (2 * g * (1 - d));
+      if (r1 < 1) {
+        EXPECT_NEAR(tavares_king_damage(g, r1, DamageForm::one_minus_d), d, 1e-12)
+            << "g " << g << " D " << d;
+      }
+      const double r2 = std::pow(d, a) * (2 * g - 5 * d + 5) / (2 * g);
+      const double slope = a * std::pow(d, a - 1) * (2 * g - 5 * d + 5) - 5 * std::pow(d, a);
+      if (r2 < 1 && slope > 0) {
+        EXPECT_NEAR(tavares_king_damage(g, r2, DamageForm::no_factor), d, 1e-12)
+            << "g " << g << " D " << d;
+      }
     }
+  }
+}
+
+// Issue 8, point 2: E50b, the median fracture energy of the particles that break at E (eq. P1b).
+// For the plain lognormal P(E) = 1/2 erfc(-ln(E/E50) / (sqrt2 sigma)); the test solves
+// P(E') = P(E)/2 by its own bisection in ln E' (no use of the library's quantile) and compares.
+// Tolerance 1e-9 relative: the bisection runs to 1e-13 in ln E', the library's inverse erf is
+// accurate to a few ulps.
+TEST(BreakingMedian, TruncatedMedianOfThePlainLognormal) {
+  const double e50 = 100.0, sigma = 0.8;
+  const FractureEnergyDistribution dist(e50, sigma, inf);
+  auto p = [&](double e) { return 0.5 * std::erfc(-std::log(e / e50) / (std::sqrt(2.0) * sigma)); };
+  for (double ratio : {0.2, 0.5, 1.0, 2.0, 5.0}) {
+    const double e = ratio * e50, target = p(e) / 2;
+    double lo = std::log(e50) - 20 * sigma, hi = std::log(e);
+    while (hi - lo > 1e-13) {
+      const double mid = 0.5 * (lo + hi);
+      (p(std::exp(mid)) < target ? lo : hi) = mid;
+    }
+    const double expect = std::exp(0.5 * (lo + hi));
+    EXPECT_NEAR(breaking_median(dist, e), expect, 1e-9 * expect) << "E/E50 " << ratio;
+    EXPECT_LT(breaking_median(dist, e), e);  // the particles that break are weaker than E
+  }
+  // E = E50: P = 1/2, so E50b is the lower quartile, E50 exp(sigma z_0.25), z_0.25 = -0.6744898.
+  EXPECT_NEAR(breaking_median(dist, e50), e50 * std::exp(-0.6744897501960817 * sigma), 1e-9 * e50);
+  // Far above E50 every particle breaks: E50b -> E50 (P(20 E50) = 1 - 9e-5 for sigma = 0.8).
+  EXPECT_NEAR(breaking_median(dist, 1e4 * e50), e50, 1e-9 * e50);
+  // Truncated at Emax = 5 E50: at and above Emax E50b is the distribution's median.
+  const FractureEnergyDistribution trunc(e50, sigma, 5.0);
+  EXPECT_DOUBLE_EQ(breaking_median(trunc, 5 * e50), trunc.median());
+  EXPECT_DOUBLE_EQ(breaking_median(trunc, 7 * e50), trunc.median());
+  // The class rule gives the E50 parameter whatever E.
+  EXPECT_EQ(t10_median_energy(dist, 0.3 * e50, E50bRule::class_median), e50);
+  EXPECT_EQ(t10_median_energy(dist, 0.3 * e50, E50bRule::breaking),
+            breaking_median(dist, 0.3 * e50));
+  EXPECT_EQ(read_e50b_rule(CaseFile::parse("").root()), E50bRule::breaking);  // the default
+  EXPECT_EQ(read_e50b_rule(CaseFile::parse("e50b = \"class\"").root()), E50bRule::class_median);
 }
 
 TEST(SizeEffect, ZeroLengthSwitchesItOff) {

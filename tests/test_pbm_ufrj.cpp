@@ -22,7 +22,7 @@ UfrjParameters params(double gamma, std::size_t bins) {
   p.energy_share = 0.5;
   p.ball_radius = 0.0125;
   p.fracture = {{100.0, 1e-3, 1.0, 1.0}, 0.8, 100.0};
-  p.damage_gamma = gamma;
+  p.damage.gamma = gamma;
   p.progeny.a = 50;
   p.progeny.b_prime = 1;
   p.progeny.alpha = {0.86, 1.0, 0.90, 0.93, 0.93};
@@ -76,7 +76,7 @@ TEST(UfrjMill, ConservesMassAndDamageWeakensTheSurvivors) {
   double med[2] = {0, 0};
   double virgin = 0;
   for (int d = 0; d < 2; ++d) {
-    p.damage_gamma = d == 0 ? 2.0 : 1e6;
+    p.damage.gamma = d == 0 ? 2.0 : 1e6;
     const UfrjMill mill(g, 2700, p);
     virgin = mill.median_fracture_energy(mill.initial_state(m0))[11];
     DormandPrince dp({1e-8, 1e-14, 1000000});
@@ -85,4 +85,30 @@ TEST(UfrjMill, ConservesMassAndDamageWeakensTheSurvivors) {
   }
   EXPECT_LT(med[0], 0.9 * virgin);
   EXPECT_GE(med[1], virgin);
+}
+
+// Issue 8, point 2: the UFRJ progeny divides by E50b, the median fracture energy of the virgin
+// particles of the class that break at e_ik (eq. P1b), by default; e50b = "class" keeps E50(x_i).
+// Today's code used E50(x_i): the default half of this test fails on it.
+TEST(UfrjMill, ProgenyUsesTheMedianOfTheParticlesThatBreak) {
+  const auto g = SizeGrid::geometric(4e-3, std::sqrt(2.0), 12, GridCoordinate::size, kv);
+  for (auto rule :
+       {comminute::fracture::E50bRule::breaking, comminute::fracture::E50bRule::class_median}) {
+    auto p = params(5.0, 60);
+    p.e50b = rule;
+    const UfrjMill mill(g, 2700, p);
+    const comminute::fracture::T10Model t10(p.progeny);
+    for (std::size_t i : {3u, 8u, 11u})
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double e = mill.specific_energy(i, k), x = g.pivot_size(i);
+        const auto dist = p.fracture.distribution(x);
+        const double e50b = rule == comminute::fracture::E50bRule::breaking
+                                ? dist.quantile(dist.cdf(e) / 2)
+                                : p.fracture.e50(x);
+        const ProgenyFractions expect = t10_progeny(t10, t10.t10(e, e50b));
+        const ProgenyFractions got = mill.progeny(i, k);
+        for (double z : {0.5, 0.1, 0.02})
+          EXPECT_NEAR(got.passing(z), expect.passing(z), 1e-12) << "class " << i << " k " << k;
+      }
+  }
 }

@@ -54,6 +54,9 @@ class ContactLaw {
   virtual std::string name() const = 0;
   // Declares the law's per-contact slots (called once, before any contact list exists).
   virtual void declare(ContactStateStore& layout) = 0;
+  // Some pair has a dynamic friction coefficient other than its static one: the law keeps a
+  // sliding flag per contact (call before declare()).
+  void use_dynamic_friction() { dynamic_friction_ = true; }
   // Normal and tangential force for one contact; updates the contact's slots in `s`.
   virtual void compute(const ContactKinematics& k, const PairParameters& p, const StateRef& s,
                        ContactForces& out) const = 0;
@@ -64,6 +67,9 @@ class ContactLaw {
   virtual StepLimit step_limit(const PairParameters&, double /*radius*/, double /*mass*/) const {
     return {};
   }
+
+ protected:
+  bool dynamic_friction_ = false;
 };
 
 // A law's factory reads the law's keys from the [contact] table.

@@ -15,7 +15,7 @@ class HertzMindlin final : public ContactLaw {
   explicit HertzMindlin(const CaseTable& t)
       : tangential_damping_(t.boolean("tangential_damping", true)) {}
   std::string name() const override { return "hertz_mindlin"; }
-  void declare(ContactStateStore& layout) override { spring_ = declare_tangential_spring(layout); }
+  void declare(ContactStateStore& layout) override { slots_.declare(layout, dynamic_friction_); }
 
   void compute(const ContactKinematics& k, const PairParameters& p, const StateRef& s,
                ContactForces& out) const override {
@@ -37,7 +37,8 @@ class HertzMindlin final : public ContactLaw {
     const double gt = tangential_damping_
                           ? -2.0 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(st * k.effective_mass)
                           : 0.0;
-    coulomb_tangential(k, st, gt, p.friction * std::abs(out.normal_force), s.vec3(spring_), out);
+    coulomb_tangential(k, st, gt, friction_limit(p, out.normal_force), s.vec3(slots_.spring),
+                       slots_.flag(s), out);
   }
 
   double normal_stiffness(const PairParameters& p, double r, double, double delta) const override {
@@ -46,7 +47,7 @@ class HertzMindlin final : public ContactLaw {
 
  private:
   bool tangential_damping_;
-  SlotId spring_ = 0;
+  TangentialSlots slots_;
 };
 
 const bool registered = ContactLawRegistry::add(

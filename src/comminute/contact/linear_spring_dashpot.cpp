@@ -20,7 +20,7 @@ class LinearSpringDashpot final : public ContactLaw {
         ratio_(t.number("tangential_stiffness_ratio", Limits{0.0, 1.0, true, false}, 2.0 / 7.0)),
         tangential_damping_(t.boolean("tangential_damping", true)) {}
   std::string name() const override { return "linear_spring_dashpot"; }
-  void declare(ContactStateStore& layout) override { spring_ = declare_tangential_spring(layout); }
+  void declare(ContactStateStore& layout) override { slots_.declare(layout, dynamic_friction_); }
 
   void compute(const ContactKinematics& k, const PairParameters& p, const StateRef& s,
                ContactForces& out) const override {
@@ -35,7 +35,8 @@ class LinearSpringDashpot final : public ContactLaw {
     const double kt = ratio_ * kn_;
     const double ct =
         tangential_damping_ ? -2.0 * p.damping_beta * std::sqrt(k.effective_mass * kt) : 0.0;
-    coulomb_tangential(k, kt, ct, p.friction * std::abs(out.normal_force), s.vec3(spring_), out);
+    coulomb_tangential(k, kt, ct, friction_limit(p, out.normal_force), s.vec3(slots_.spring),
+                       slots_.flag(s), out);
   }
 
   double normal_stiffness(const PairParameters&, double, double, double) const override {
@@ -52,7 +53,7 @@ class LinearSpringDashpot final : public ContactLaw {
  private:
   double kn_, ratio_;
   bool tangential_damping_;
-  SlotId spring_ = 0;
+  TangentialSlots slots_;
 };
 
 const bool registered = ContactLawRegistry::add("linear_spring_dashpot", [](const CaseTable& t) {

@@ -1,9 +1,12 @@
 #pragma once
 // Coulomb friction with a tangential spring–dashpot whose history is carried in the contact: the
 // stored displacement is rotated into the current tangent plane (keeping its length) and
-// incremented by v_t dt. When the spring force exceeds mu |F_n| the contact slides: the spring is
-// truncated to the limit and the dashpot is off; while it sticks, spring + dashpot are capped at
-// the limit by reducing the dashpot part.
+// incremented by v_t dt. When the spring force exceeds the static limit mu_s |F_n| the contact
+// slides: the spring is truncated to the dynamic limit mu_d |F_n| and the dashpot is off; a
+// sliding contact (its flag set) keeps sliding while the spring force exceeds mu_d |F_n|; while it
+// sticks, spring + dashpot are capped at mu_s |F_n| by reducing the dashpot part (Coulomb's static
+// and kinetic friction; mu_d = mu_s, the default, is the single-coefficient rule and needs no
+// flag).
 #include <cmath>
 
 #include "comminute/contact/contact_law.hpp"
@@ -12,15 +15,38 @@ namespace comminute {
 
 // The slot of the spring: the tangential displacement of i relative to j (m), which changes sign
 // when i and j swap.
-inline SlotId declare_tangential_spring(ContactStateStore& layout) {
-  return layout.declare_vec3("tangential_spring", SwapRule::negate);
+// The sliding flag (1 while the contact slides) is declared only when some pair of the run has
+// mu_d != mu_s (ContactLaw::use_dynamic_friction()).
+struct TangentialSlots {
+  SlotId spring = 0;
+  SlotId sliding = ContactStateStore::none;
+  void declare(ContactStateStore& layout, bool dynamic_friction) {
+    spring = layout.declare_vec3("tangential_spring", SwapRule::negate);
+    if (dynamic_friction) sliding = layout.declare_f32("tangential_sliding", SwapRule::keep);
+  }
+  float* flag(const StateRef& s) const {
+    return sliding == ContactStateStore::none ? nullptr : &s.f32(sliding);
+  }
+};
+
+// The Coulomb limits of a contact (N): mu_s |F_n| to start sliding, mu_d |F_n| while sliding.
+struct FrictionLimit {
+  double stick = 0;
+  double slide = 0;
+};
+
+inline FrictionLimit friction_limit(const PairParameters& p, double normal_force) {
+  return {p.friction * std::abs(normal_force), p.dynamic_friction * std::abs(normal_force)};
 }
 
-// kt: tangential stiffness (N/m), ct: tangential damping (N s/m), limit: mu |F_n| (N),
-// `stored`: the contact's stored displacement (m). Sets out.tangential_force, adds to
-// out.stored_energy, out.damping_dissipation, out.friction_dissipation.
-inline void coulomb_tangential(const ContactKinematics& k, double kt, double ct, double limit,
-                               Vec3& stored, ContactForces& out) {
+// kt: tangential stiffness (N/m), ct: tangential damping (N s/m), `lim`: the limits (N),
+// `stored`: the contact's stored displacement (m), `sliding`: its flag (null: mu_d = mu_s
+// everywhere). Sets out.tangential_force, adds to out.stored_energy, out.damping_dissipation,
+// out.friction_dissipation.
+inline void coulomb_tangential(const ContactKinematics& k, double kt, double ct, FrictionLimit lim,
+                               Vec3& stored, float* sliding, ContactForces& out) {
+  const double limit = lim.stick;
+  const bool was_sliding = sliding != nullptr && *sliding != 0.0f;
   Vec3 xi = stored;
   // rotate into the current tangent plane, preserving the magnitude
   const double len2 = norm2(xi);
@@ -33,12 +59,15 @@ inline void coulomb_tangential(const ContactKinematics& k, double kt, double ct,
   xi = trial;
   const double spring = kt * std::sqrt(norm2(xi));
   Vec3 ft;
-  if (spring > limit) {
-    // sliding: the spring is cut back to |k_t xi| = mu |F_n| and the dashpot is off; the friction
-    // force does work |F_t| |slip|, slip being the part of the motion the spring did not take
-    xi *= limit / spring;
+  const bool slides = spring > limit || (was_sliding && spring > lim.slide);
+  if (sliding != nullptr) *sliding = slides ? 1.0f : 0.0f;
+  if (slides) {
+    // sliding: the spring is cut back to |k_t xi| = mu_d |F_n| and the dashpot is off; the
+    // friction force does work |F_t| |slip|, slip being the part of the motion the spring did not
+    // take
+    xi *= lim.slide / spring;
     ft = -kt * xi;
-    out.friction_dissipation += limit * norm(trial - xi);
+    out.friction_dissipation += lim.slide * norm(trial - xi);
   } else {
     // sticking: spring + dashpot, the total capped at mu |F_n| by reducing the dashpot part
     const Vec3 fs = -kt * xi;

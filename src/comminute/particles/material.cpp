@@ -41,7 +41,14 @@ void MaterialTable::rebuild_pair(std::uint16_t a, std::uint16_t b, const PairInp
   q.effective_shear_modulus = 1.0 / (2 * (2 - v1) * (1 + v1) / m1.youngs_modulus +
                                      2 * (2 - v2) * (1 + v2) / m2.youngs_modulus);
   q.damping_beta = damping_beta(p.restitution);
+  if (q.dynamic_friction < 0) q.dynamic_friction = q.friction;
   pairs_[a * n + b] = q;
+}
+
+bool MaterialTable::has_dynamic_friction() const {
+  for (const auto& q : pairs_)
+    if (q.dynamic_friction != q.friction) return true;
+  return false;
 }
 
 int MaterialTable::find(const std::string& name) const {

@@ -17,13 +17,15 @@ struct Material {
 // What a user sets for a pair of materials.
 struct PairInput {
   double restitution = 0.5;              // normal coefficient of restitution, (0, 1]
-  double friction = 0.5;                 // Coulomb sliding friction coefficient
+  double friction = 0.5;                 // static Coulomb friction coefficient mu_s
+  double dynamic_friction = -1.0;        // mu_d while sliding; < 0: the same as mu_s
   double rolling_friction = 0.0;         // rolling resistance coefficient (dimensionless)
   double cohesion_energy_density = 0.0;  // J/m3, SJKR cohesion (LIGGGHTS' cohesionEnergyDensity)
   double rolling_damping = 0.0;          // viscous damping ratio of the EPSD rolling model
+  double surface_energy = 0.0;           // J/m2, work of adhesion Gamma of the JKR cohesion
 };
 
-// PairInput plus the derived constants the contact laws use.
+// PairInput plus the derived constants the contact laws use (dynamic_friction resolved: >= 0).
 struct PairParameters : PairInput {
   double effective_modulus = 0.0;        // E*, 1/E* = (1-v1^2)/E1 + (1-v2^2)/E2  [Pa]
   double effective_shear_modulus = 0.0;  // G*, 1/G* = 2(2-v1)(1+v1)/E1 + ...      [Pa]
@@ -40,6 +42,8 @@ class MaterialTable {
   const PairParameters& pair(std::uint16_t a, std::uint16_t b) const {
     return pairs_[static_cast<std::size_t>(a) * materials_.size() + b];
   }
+  // True when some pair slides with a dynamic friction coefficient other than its static one.
+  bool has_dynamic_friction() const;
   // Index of a material by name, or -1.
   int find(const std::string& name) const;
 

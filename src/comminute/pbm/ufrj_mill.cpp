@@ -5,7 +5,6 @@
 #include <memory>
 
 #include "comminute/core/error.hpp"
-#include "comminute/fracture/damage.hpp"
 #include "comminute/pbm/t10_breakage_function.hpp"
 
 namespace comminute::pbm {
@@ -24,6 +23,7 @@ UfrjMill::UfrjMill(const SizeGrid& grid, double density, UfrjParameters p)
   for (std::size_t i = 0; i < n_; ++i) {
     const double x = grid.pivot_size(i);
     e50_.push_back(p_.fracture.e50(x));
+    size_.push_back(x);
     for (std::size_t j = 0; j < m_; ++j)  // the first bin also takes everything below it
       virgin_(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(i)) =
           p_.fracture.cdf(edge(j + 1) * e50_[i], x) -
@@ -47,8 +47,7 @@ UfrjMill::UfrjMill(const SizeGrid& grid, double density, UfrjParameters p)
         // survivors sit at the geometric centre of their part of the bin, then are damaged
         const double lo_s = std::max(lo, std::min(r, hi));
         const double eps = f < 1 ? std::sqrt(lo_s * hi) : hi;
-        const double eps_d =
-            f < 1 ? eps * (1 - fracture::tavares_king_damage(p_.damage_gamma, r / eps)) : eps;
+        const double eps_d = f < 1 ? eps * (1 - p_.damage(r / eps)) : eps;
         const double pos = (std::log(eps_d) - ln_lo_) / ln_step_ - 0.5;  // in bin-centre units
         const double c = std::clamp(pos, 0.0, static_cast<double>(m_ - 1));
         const auto b = std::min(static_cast<std::size_t>(c), m_ - 2);
@@ -75,7 +74,10 @@ double UfrjMill::specific_energy(std::size_t i, std::size_t k) const {
 }
 
 ProgenyFractions UfrjMill::progeny(std::size_t i, std::size_t k) const {
-  return t10_progeny(t10_, t10_.t10(specific_energy(i, k), e50_[i]));
+  const double e = specific_energy(i, k);
+  const double e50b =
+      fracture::t10_median_energy(p_.fracture.distribution(size_[i]), e, p_.e50b);  // eq. P1b
+  return t10_progeny(t10_, t10_.t10(e, e50b));
 }
 
 // docs/models.md eq. U3-U5: captured mass breaks (bins below e) or is damaged and moved down.
@@ -148,8 +150,9 @@ std::vector<double> UfrjMill::virgin_rates() const {
 
 namespace {
 // The [mill] table: spectrum_file, holdup, energy_share, capture_radius or ball_diameter,
-// damage_gamma, energy_bins, [mill.fracture_energy] (fracture::read_fracture_energy_model) and
-// [mill.progeny] (fracture::read_t10_model).
+// damage_gamma, damage_form, energy_bins, [mill.fracture_energy]
+// (fracture::read_fracture_energy_model) and [mill.progeny] (fracture::read_t10_model,
+// fracture::read_e50b_rule).
 std::unique_ptr<MillModel> make(const CaseTable& t, const ModelContext& ctx) {
   UfrjParameters u;
   u.spectrum = read_collision_spectrum(t, "spectrum_file");
@@ -163,9 +166,11 @@ std::unique_ptr<MillModel> make(const CaseTable& t, const ModelContext& ctx) {
   u.fracture = fracture::read_fracture_energy_model(fe);
   if (!std::isfinite(u.fracture.emax_ratio))
     fe.fail("emax_ratio", "the UFRJ mill bins ln(E/E50) up to Emax/E50: give a finite emax_ratio");
-  u.damage_gamma = fracture::read_damage_gamma(t);
+  u.damage = fracture::read_damage_law(t);
   u.energy_bins = static_cast<std::size_t>(t.integer("energy_bins", 4, 10000, 60));
-  u.progeny = fracture::read_t10_model(t.table("progeny")).parameters();
+  const CaseTable progeny = t.table("progeny");
+  u.progeny = fracture::read_t10_model(progeny).parameters();
+  u.e50b = fracture::read_e50b_rule(progeny);
   return std::make_unique<UfrjMill>(ctx.grid, ctx.density, std::move(u));
 }
 const bool registered = MillRegistry::add("ufrj", &make);

@@ -8,8 +8,9 @@
 //  * the powder's share η E_k is split equally among the captured particles: e_ik = η E_k/m*_i
 //                                                                                      (eq. U2);
 //  * the captured particles whose fracture energy is below e_ik break, with the t10-based
-//    progeny (fracture::T10Model, eq. P1–P2, E50 of the class); the others are damaged
-//    (fracture::tavares_king_damage, eq. D1–D2) and their fracture energy E drops to
+//    progeny (fracture::T10Model, eq. P1–P2, with E50b the median fracture energy of the virgin
+//    particles of the class that break at e_ik, eq. P1b; or the class E50); the others are damaged
+//    (fracture::DamageLaw, eq. D1–D2) and their fracture energy E drops to
 //    E(1 − D(e/E))                                                                      (eq. U3);
 //  * fracture energies per size class start from the upper-truncated lognormal F_i
 //    (fracture::FractureEnergyModel, eq. F1–F3) and are tracked as mass in bins of ln(E/E50,i),
@@ -20,6 +21,8 @@
 #include <Eigen/Dense>
 #include <vector>
 
+#include "comminute/fracture/breaking_median.hpp"
+#include "comminute/fracture/damage.hpp"
 #include "comminute/fracture/fracture_energy_model.hpp"
 #include "comminute/fracture/t10_model.hpp"
 #include "comminute/pbm/mill_model.hpp"
@@ -34,8 +37,9 @@ struct UfrjParameters {
   double ball_radius = 0;                  // m: r_c = √(R x) when capture_radius is 0
   double capture_radius = 0;               // m
   fracture::FractureEnergyModel fracture;  // emax_ratio must be finite (the bins end there)
-  double damage_gamma = 5;                 // γ of the damage law
+  fracture::DamageLaw damage;              // γ and form of the damage law (eq. D1)
   fracture::T10Parameters progeny;
+  fracture::E50bRule e50b = fracture::E50bRule::breaking;  // E50 of the t10 relation (eq. P1b)
   std::size_t energy_bins = 60;
 };
 
@@ -69,7 +73,7 @@ class UfrjMill : public MillModel {
   };
   std::size_t n_, m_;
   double ln_lo_, ln_step_;  // bins in ln(E/E50): edges ln_lo + j·step
-  std::vector<double> e50_, mstar_;
+  std::vector<double> e50_, mstar_, size_;
   Eigen::MatrixXd virgin_;                   // (m_ × n_) virgin bin fractions per class
   std::vector<std::vector<Stress>> stress_;  // [class][energy class]
   UfrjParameters p_;

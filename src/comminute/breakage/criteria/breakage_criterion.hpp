@@ -15,6 +15,7 @@
 #include "comminute/core/case_table.hpp"
 #include "comminute/core/registry.hpp"
 #include "comminute/core/rng.hpp"
+#include "comminute/fracture/breaking_median.hpp"
 #include "comminute/particles/material.hpp"
 #include "comminute/particles/particle_store.hpp"
 
@@ -57,6 +58,13 @@ class BreakageCriterion {
   // Median specific fracture energy of size d (J/kg) used by the t10 model (E50b), or a negative
   // number when the criterion has none (the progeny table then needs reference_energy).
   virtual double median_fracture_energy(double /*d*/) const { return -1.0; }
+  // E50b of the t10 relation for an event of stressing energy `specific_energy` (J/kg) on a
+  // particle of size d (docs/models.md eq. P1b) under `rule` (ProgenyModel::e50b_rule()); criteria
+  // without a fracture-energy distribution answer median_fracture_energy(d).
+  virtual double t10_median_energy(double d, double /*specific_energy*/,
+                                   fracture::E50bRule /*rule*/) const {
+    return median_fracture_energy(d);
+  }
 };
 
 // A criterion's factory reads its own keys from the material's [materials.<m>.breakage] table;

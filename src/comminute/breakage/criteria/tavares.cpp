@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "comminute/fracture/damage.hpp"
 #include "comminute/fracture/energy_share.hpp"
 
 namespace comminute::breakage {
@@ -24,7 +23,7 @@ bool Tavares::breaks(const ParticleStore& p, std::size_t i, double, const Stress
 void Tavares::survive(ParticleStore& p, std::size_t i, double, const StressingEvent& e) const {
   if (e.specific_energy < p_.min_damage_energy) return;
   double& energy = p.field(energy_)[i];
-  const double d = fracture::tavares_king_damage(p_.gamma, e.specific_energy / energy);
+  const double d = p_.damage(e.specific_energy / energy);
   energy *= 1.0 - d;  // E <- E(1 - D), Tavares & King (2002), docs/models.md eq. D2
   double& total = p.field(damage_)[i];
   total = 1.0 - (1.0 - total) * (1.0 - d);
@@ -43,12 +42,12 @@ double Tavares::probability(double d, const StressingEvent& e) const {
 }
 
 namespace {
-// Keys: the fracture energies (fracture::read_fracture_energy_model), damage_gamma,
+// Keys: the fracture energies (fracture::read_fracture_energy_model), damage_gamma, damage_form,
 // min_damage_energy, and the basis of e_inf (docs/breakage.md).
 std::unique_ptr<BreakageCriterion> make(const CaseTable& t, const Material& m) {
   TavaresParameters p;
   static_cast<fracture::FractureEnergyModel&>(p) = fracture::read_fracture_energy_model(t);
-  p.gamma = fracture::read_damage_gamma(t);
+  p.damage = fracture::read_damage_law(t);
   p.min_damage_energy = t.number("min_damage_energy", Limits::non_negative(), 0.0);
   // E_inf measured as applied energy against a device (steel by default) or as absorbed energy.
   const std::string basis = t.choice("e_inf_basis", {"applied", "absorbed"}, "applied");

@@ -7,6 +7,7 @@
 
 #include "comminute/core/case_table.hpp"
 #include "comminute/core/registry.hpp"
+#include "comminute/fracture/breaking_median.hpp"
 #include "comminute/fracture/progeny_distribution.hpp"
 
 namespace comminute::breakage {
@@ -20,6 +21,10 @@ class ProgenyModel {
   // Breakage index t10 (%) of an event of specific energy `specific_energy` (J/kg) on a parent
   // whose median fracture energy is `e50` (J/kg).
   virtual double t10(double specific_energy, double e50) const = 0;
+  // Which E50 t10() wants (key e50b): the median of the particles that break at the event's
+  // energy (default) or the class median; the caller asks the criterion for it
+  // (BreakageCriterion::t10_median_energy).
+  virtual fracture::E50bRule e50b_rule() const { return fracture::E50bRule::class_median; }
   // Cumulative progeny size distribution of a parent of diameter d (m) at breakage index t10.
   virtual ProgenyDistribution distribution(double d, double t10) const = 0;
 };

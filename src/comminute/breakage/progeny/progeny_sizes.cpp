@@ -78,9 +78,15 @@ Progeny draw_progeny(const ProgenyDistribution& dist, double mass, double densit
         if (rest - m >= m_lo) {
           pieces.push_back(m);
           rest -= m;
-        } else {  // rest in (m_hi, m + m_lo): two equal halves, both inside the class
-          pieces.push_back(rest / 2);
-          pieces.push_back(rest / 2);
+        } else {  // rest in (m_hi, m + m_lo): closes the class as equal halves, or as one
+          // fragment when halves would fall below the class (a class narrower than 2^(1/3) in
+          // size: the last one ends at the minimum fragment size, which no fragment may undercut)
+          if (rest / 2 >= m_lo) {
+            pieces.push_back(rest / 2);
+            pieces.push_back(rest / 2);
+          } else {
+            pieces.push_back(rest);  // at most 2 m_lo: size below 2^(1/3) lo
+          }
           break;
         }
       }

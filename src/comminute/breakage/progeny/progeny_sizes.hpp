@@ -5,7 +5,9 @@
 // fragment size; each class receives the parent mass times its share of the progeny distribution
 // and is filled with fragments whose sizes are drawn from the class's number distribution
 // (mass density / x^3) until the class mass is used: the last fragment of a class closes its mass
-// (two equal fragments when one would fall below the class); a class too small for one fragment
+// (two equal fragments when one would fall below the class, or one fragment a little above the
+// class when halves would fall below it: no fragment is smaller than the minimum fragment size,
+// even where the last class is narrower than 2^(1/3)); a class too small for one fragment
 // passes its mass on to the next finer class. Mass below the minimum fragment size is fines.
 #include <vector>
 

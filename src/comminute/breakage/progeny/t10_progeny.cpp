@@ -20,9 +20,10 @@ fracture::T10Parameters T10Progeny::illustrative() {
 }
 
 namespace {
-// Keys A, b_prime, alpha, beta (fracture::read_t10_model).
+// Keys A, b_prime, alpha, beta (fracture::read_t10_model), e50b (fracture::read_e50b_rule).
 std::unique_ptr<ProgenyModel> make(const CaseTable& t) {
-  return std::make_unique<T10Progeny>(fracture::read_t10_model(t).parameters());
+  return std::make_unique<T10Progeny>(fracture::read_t10_model(t).parameters(),
+                                      fracture::read_e50b_rule(t));
 }
 const bool registered = ProgenyRegistry::add("t10", &make);
 }  // namespace

@@ -8,9 +8,12 @@ namespace comminute::breakage {
 
 class T10Progeny final : public ProgenyModel {
  public:
-  explicit T10Progeny(const fracture::T10Parameters& p) : model_(p) {}
+  explicit T10Progeny(const fracture::T10Parameters& p,
+                      fracture::E50bRule rule = fracture::E50bRule::breaking)
+      : model_(p), rule_(rule) {}
   std::string name() const override { return "t10"; }
   double t10(double specific_energy, double e50) const override;
+  fracture::E50bRule e50b_rule() const override { return rule_; }
   ProgenyDistribution distribution(double d, double t10) const override;
   const fracture::T10Model& model() const { return model_; }
   // Illustrative t_n family (a fit to a typical t-family chart; not published values), A = 50 %,
@@ -19,6 +22,7 @@ class T10Progeny final : public ProgenyModel {
 
  private:
   fracture::T10Model model_;
+  fracture::E50bRule rule_;
 };
 
 }  // namespace comminute::breakage

@@ -39,6 +39,14 @@ PairInput read_pair(const CaseTable& t, const PairInput& base) {
   p.rolling_damping = t.number("rolling_damping", Limits::non_negative(), base.rolling_damping);
   p.cohesion_energy_density =
       t.number("cohesion_energy_density", Limits::non_negative(), base.cohesion_energy_density);
+  p.surface_energy = t.number("surface_energy", Limits::non_negative(), base.surface_energy);
+  if (t.has("dynamic_friction")) {
+    p.dynamic_friction = t.number("dynamic_friction", Limits::non_negative());
+    if (p.dynamic_friction > p.friction)
+      t.fail("dynamic_friction", "the dynamic friction coefficient must not exceed `friction`");
+  } else if (t.has("friction")) {
+    p.dynamic_friction = -1.0;  // a pair that sets only `friction` slides with it too
+  }
   return p;
 }
 

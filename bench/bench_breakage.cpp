@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
     breakage::TavaresParameters tp;
     tp.size_effect = {0.1, 0.0, 1.0, 1.0};  // J/kg absorbed: weak, breaks at first collisions
     tp.sigma = 0.5;
-    tp.gamma = 3.0;
+    tp.damage.gamma = 3.0;
     std::vector<std::optional<breakage::MaterialBreakage>> mats(1);
     mats[0].emplace();
     mats[0]->criterion = std::make_unique<breakage::Tavares>(tp);

@@ -112,12 +112,12 @@ Table BreakageSeries::model_curves(const Simulation& sim) const {
       }
     if (n == 0) continue;
     d /= static_cast<double>(n);
-    double e50b = mat->criterion->median_fracture_energy(d);
-    if (e50b <= 0) e50b = mat->reference_energy;
     const bool energy_criterion = mat->criterion->energy_based();
     for (int k = 0; k <= 200; ++k) {
       const double e = 1.5 * e_max * k / 200.0;
       const double prob = energy_criterion ? mat->criterion->probability(d, {e, 0.0}) : -1.0;
+      double e50b = mat->criterion->t10_median_energy(d, e, mat->progeny->e50b_rule());
+      if (e50b <= 0) e50b = mat->reference_energy;
       t.add_row({m, d, e, prob, mat->progeny->t10(e, e50b)});
     }
   }

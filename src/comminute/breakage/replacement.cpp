@@ -86,7 +86,9 @@ void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t paren
   const double mass = p.mass[parent];
   const double density = mass / units::sphere_volume(r_parent);
   // Progeny sizes (docs/models.md eq. P1-P4).
-  double e50b = mat.criterion->median_fracture_energy(d);
+  // E50b: the median fracture energy of the particles that break at this stressing energy, or
+  // the class median (progeny key e50b; docs/models.md eq. P1b)
+  double e50b = mat.criterion->t10_median_energy(d, rec.specific_energy, mat.progeny->e50b_rule());
   if (e50b <= 0) e50b = mat.reference_energy;
   rec.t10 = mat.progeny->t10(rec.specific_energy, e50b);
   const ProgenyDistribution dist = mat.progeny->distribution(d, rec.t10);

@@ -87,21 +87,47 @@ TEST(ContactState, ADeclarationClashIsRefused) {
   EXPECT_THROW(s.declare_f32("spring", SwapRule::negate), Error);
 }
 
+namespace {
+// A module asking for the loading record (as breakage does) and, optionally, a slot of its own
+// (as a bond law will: a stored bond force).
+class AsksForState final : public Module {
+ public:
+  explicit AsksForState(bool own_slot) : own_slot_(own_slot) {}
+  std::string name() const override { return "asks"; }
+  void declare_contact_state(ContactPipeline& c) override {
+    c.require_loading_record();
+    if (own_slot_) c.module_layout().declare_vec3("bond_force", SwapRule::negate);
+  }
+
+ private:
+  bool own_slot_;
+};
+}  // namespace
+
 TEST(ContactState, BytesPerContactFollowTheSubModels) {
   // Hertz–Mindlin keeps its tangential spring (24 B) and the active flag (1 B); EPSD rolling adds
-  // its spring (24 B); breakage's loading record three floats (12 B). The history struct these
-  // replace held all of them in every contact: 64 B + 1 B flag.
+  // its spring (24 B); breakage's loading record three floats (12 B); a module's own Vec3 slot
+  // 24 B. The history struct these replace held a fixed 64 B + 1 B flag in every contact.
   const CaseFile none = CaseFile::parse("");
   auto law = ContactLawRegistry::create("hertz_mindlin", none.root());
   auto rolling = RollingResistanceRegistry::create("epsd", none.root());
+  std::vector<std::unique_ptr<Module>> no_modules, breakage, bonds;
+  breakage.push_back(std::make_unique<AsksForState>(false));
+  bonds.push_back(std::make_unique<AsksForState>(true));
   ContactPipeline plain;
-  EXPECT_EQ(plain.assemble(*law, nullptr, nullptr).bytes_per_contact(), 25u);
+  EXPECT_EQ(plain.assemble(*law, nullptr, nullptr, no_modules).bytes_per_contact(), 25u);
+  EXPECT_EQ(plain.loading(), nullptr);
   ContactPipeline with_rolling;
-  EXPECT_EQ(with_rolling.assemble(*law, rolling.get(), nullptr).bytes_per_contact(), 49u);
-  ContactPipeline breakage;
-  breakage.require_loading_record();
-  EXPECT_EQ(breakage.assemble(*law, nullptr, nullptr).bytes_per_contact(), 37u);
-  EXPECT_EQ(breakage.layout().slot_names(),
+  EXPECT_EQ(with_rolling.assemble(*law, rolling.get(), nullptr, no_modules).bytes_per_contact(),
+            49u);
+  ContactPipeline with_breakage;
+  EXPECT_EQ(with_breakage.assemble(*law, nullptr, nullptr, breakage).bytes_per_contact(), 37u);
+  EXPECT_NE(with_breakage.loading(), nullptr);
+  EXPECT_EQ(with_breakage.layout().slot_names(),
             (std::vector<std::string>{"tangential_spring", "loading_max_overlap", "loading_work",
                                       "loading_normal_force"}));
+  ContactPipeline with_bonds;
+  EXPECT_EQ(with_bonds.assemble(*law, nullptr, nullptr, bonds).bytes_per_contact(), 61u);
+  // slots are declared while the model is assembled, not after
+  EXPECT_THROW(with_bonds.module_layout(), Error);
 }

@@ -5,31 +5,46 @@
 // sees the same physics. assemble() declares every sub-model's per-contact slots in a fixed order
 // on a layout from which the engine's pair and wall stores are made.
 #include <memory>
+#include <vector>
 
 #include "comminute/contact/cohesion.hpp"
 #include "comminute/contact/contact_law.hpp"
 #include "comminute/contact/loading_record.hpp"
 #include "comminute/contact/rolling_resistance.hpp"
+#include "comminute/core/error.hpp"
+#include "comminute/engine/module.hpp"
 
 namespace comminute {
 
 class ContactPipeline {
  public:
-  // Asks for the loading record (before assemble()).
-  void require_loading_record() { want_loading_ = true; }
-  // Fixes the sub-models and declares their slots; returns the layout (an empty store).
-  const ContactStateStore& assemble(ContactLaw& law, RollingResistance* rolling,
-                                    Cohesion* cohesion) {
+  // Fixes the sub-models and declares their slots in a fixed order: the law's, the rolling
+  // model's, then each module's (Module::declare_contact_state, which may ask for the loading
+  // record or declare slots of its own on module_layout()). Returns the layout (an empty store).
+  const ContactStateStore& assemble(ContactLaw& law, RollingResistance* rolling, Cohesion* cohesion,
+                                    const std::vector<std::unique_ptr<Module>>& modules) {
     law_ = &law;
     rolling_ = rolling;
     cohesion_ = cohesion;
     layout_ = ContactStateStore{};
+    loading_.reset();
     law.declare(layout_);
     if (rolling) rolling->declare(layout_);
-    if (want_loading_) {
+    assembling_ = true;
+    for (const auto& m : modules) m->declare_contact_state(*this);
+    assembling_ = false;
+    return layout_;
+  }
+  // For modules, during assemble(): the loading record, and slots of their own (a bond's state).
+  void require_loading_record() {
+    if (!loading_) {
       loading_ = std::make_unique<LoadingRecord>();
-      loading_->declare(layout_);
+      loading_->declare(module_layout());
     }
+  }
+  ContactStateStore& module_layout() {
+    if (!assembling_)
+      throw Error("per-contact slots are declared while the contacts are assembled");
     return layout_;
   }
   bool assembled() const { return law_ != nullptr; }
@@ -50,7 +65,7 @@ class ContactPipeline {
   RollingResistance* rolling_ = nullptr;
   Cohesion* cohesion_ = nullptr;
   std::unique_ptr<LoadingRecord> loading_;
-  bool want_loading_ = false;
+  bool assembling_ = false;
   ContactStateStore layout_;
 };
 

@@ -31,8 +31,9 @@ class Module {
   virtual ~Module() = default;
   virtual std::string name() const = 0;
   virtual ModuleStage stage() const { return ModuleStage::physics; }
-  // Asks for per-contact state (e.g. the loading record) before the contact lists exist; called
-  // once, at set-up or before a checkpoint is read.
+  // Asks for per-contact state (the loading record, or slots of its own on
+  // ContactPipeline::module_layout()) while the contact model is assembled: once, at set-up or
+  // before a checkpoint is read.
   virtual void declare_contact_state(ContactPipeline&) {}
   virtual void setup(Simulation&) {}
   virtual void pre_force(Simulation&) {}

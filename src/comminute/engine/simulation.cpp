@@ -21,9 +21,9 @@ void Simulation::assemble_contacts() {
   std::stable_sort(modules.begin(), modules.end(), [](const auto& a, const auto& b) {
     return static_cast<int>(a->stage()) < static_cast<int>(b->stage());
   });
-  for (auto& m : modules) m->declare_contact_state(contacts_);
   if (materials.has_dynamic_friction()) law->use_dynamic_friction();
-  const ContactStateStore& layout = contacts_.assemble(*law, rolling.get(), cohesion.get());
+  const ContactStateStore& layout =
+      contacts_.assemble(*law, rolling.get(), cohesion.get(), modules);
   pair_state_ = layout.same_layout();
   wall_state_ = layout.same_layout();
 }

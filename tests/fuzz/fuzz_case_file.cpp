@@ -19,6 +19,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     io::DemCase dem = io::build_dem_case(file.root());
     if (const auto t = file.root().optional_table("output")) (void)io::read_output_options(*t);
     io::add_breakage(file.root(), dem);
+    io::decide_time_step(dem);
     file.reject_unknown();
     (void)file.fingerprint();
   } catch (const Error&) {

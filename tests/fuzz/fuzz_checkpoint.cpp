@@ -24,6 +24,7 @@ io::DemCase build() {
       CaseFile::load(std::string(COMMINUTE_SOURCE_DIR) + "/examples/breakage/bed_impact.toml");
   io::DemCase dem = io::build_dem_case(file.root());
   io::add_breakage(file.root(), dem);
+  io::decide_time_step(dem);
   return dem;
 }
 

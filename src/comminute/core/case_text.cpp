@@ -61,6 +61,14 @@ void check_utf8(std::string_view text, const std::string& name) {
 void check_non_ascii_placement(std::string_view text, const std::string& name) {
   enum class In { code, comment, basic, literal, ml_basic, ml_literal } in = In::code;
   long line = 1;
+  // A quote opens a string only where TOML allows one (after '=', '[', ',', '{', '.' or at the
+  // start of a line); elsewhere (e.g. right after a malformed number) toml++ keeps classifying the
+  // characters that follow as code, so they must stay ASCII.
+  char previous = '\n';  // last non-blank character of code
+  auto opens_string = [&previous] {
+    return previous == '\n' || previous == '=' || previous == '[' || previous == ',' ||
+           previous == '{' || previous == '.';
+  };
   auto at = [&](std::size_t i, std::string_view what) {
     return text.substr(i, what.size()) == what;
   };
@@ -72,6 +80,11 @@ void check_non_ascii_placement(std::string_view text, const std::string& name) {
     switch (in) {
       case In::code:
         if (non_ascii) refuse("non-ASCII character outside a string or comment");
+        if ((c == '"' || c == '\'') && !opens_string()) {
+          previous = c;
+          break;
+        }
+        if (c != ' ' && c != '\t' && c != '\r') previous = c;
         if (c == '#') in = In::comment;
         if (c == '"') {
           if (at(i, "\"\"\"")) {
@@ -91,7 +104,10 @@ void check_non_ascii_placement(std::string_view text, const std::string& name) {
         }
         break;
       case In::comment:
-        if (c == '\n') in = In::code;
+        if (c == '\n') {
+          in = In::code;
+          previous = '\n';
+        }
         break;
       case In::basic:
       case In::ml_basic:
@@ -109,14 +125,20 @@ void check_non_ascii_placement(std::string_view text, const std::string& name) {
           }
           break;
         }
-        if (in == In::basic && (c == '"' || c == '\n')) in = In::code;
+        if (in == In::basic && (c == '"' || c == '\n')) {
+          in = In::code;
+          if (c == '\n') previous = '\n';
+        }
         if (in == In::ml_basic && at(i, "\"\"\"")) {
           while (i + 1 < text.size() && text[i + 1] == '"') ++i;  // up to two quotes of content
           in = In::code;
         }
         break;
       case In::literal:
-        if (c == '\'' || c == '\n') in = In::code;
+        if (c == '\'' || c == '\n') {
+          in = In::code;
+          if (c == '\n') previous = '\n';
+        }
         break;
       case In::ml_literal:
         if (at(i, "'''")) {

@@ -76,13 +76,14 @@ line=$(wc -l < bad_impacts.csv)
 check "bad_impacts.csv was made" grep -q ',0.5$' bad_impacts.csv
 expect_error "capece probabilities not summing to one" bad_impacts.toml "bad_impacts.csv:$line: key 'rate.specific_energy_file': the probabilities sum to"
 
-sed -e 's/^impact_frequency = .*/impact_frequency = 4.0\nholdup = 0.5/' ball_mill_spectrum.toml > bad_holdup.toml
-line=$(grep -n '^holdup' bad_holdup.toml | cut -d: -f1)
-expect_error "capece with a skeleton key" bad_holdup.toml "bad_holdup.toml:$line: key 'rate.holdup': capece takes"
-
-sed -e 's/^model = "capece"/model = "tuzcu_rajamani"/' ball_mill_spectrum.toml > old_name.toml
-line=$(grep -n '^model = "tuzcu_rajamani"' old_name.toml | cut -d: -f1)
-expect_error "old model name" old_name.toml "old_name.toml:$line: key 'rate.model'"
+edited_case_fails() {  # <description> <sed expression> <new case> <line pattern> <message>
+  sed -e "$2" ball_mill_spectrum.toml > "$3"
+  expect_error "$1" "$3" "$3:$(grep -n -- "$4" "$3" | cut -d: -f1): $5"
+}
+edited_case_fails "capece with a skeleton key" 's/^impact_frequency = .*/impact_frequency = 4.0\nholdup = 0.5/' \
+  bad_holdup.toml '^holdup' "key 'rate.holdup': capece takes"
+edited_case_fails "old model name" 's/^model = "capece"/model = "tuzcu_rajamani"/' \
+  old_name.toml '^model = ' "key 'rate.model'"
 check "old model name: the known names include the variant" grep -qF "tuzcu_rajamani_variant" <<<"$out"
 
 # --- calibrate: measured data without the passing column

@@ -8,8 +8,7 @@
 
 namespace comminute::pbm {
 
-// Capece, Bilgili & Davé, AIChE J. 60 (2014) 2404, eq. 13: S_i = f_mat x_i ω Σ_k p_k (E_m,k −
-// E_m,min,i)⁺.
+// Capece et al., AIChE J. 60 (2014) 2404, eq. 13: S_i = f_mat x_i ω Σ p_k (E_m,k − E_min,i)⁺
 double CapeceRate::rate(double size, double /*volume*/) const {
   const double threshold = material_.threshold(size);  // E_m,min,i = (x E_m,min)/x_i
   double excess = 0;

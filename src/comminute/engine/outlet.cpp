@@ -1,0 +1,131 @@
+#include "comminute/engine/outlet.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "comminute/core/error.hpp"
+#include "comminute/engine/simulation.hpp"
+
+namespace comminute {
+
+bool OutletSpec::captures(const Vec3& x) const {
+  return half_space ? dot(x - point, normal) > 0 : region.contains(x, 0.0);
+}
+
+OutletModule::OutletModule(std::vector<OutletSpec> outlets) : outlets_(std::move(outlets)) {}
+
+namespace {
+// Per-particle fields the breakage module may have registered (the engine does not need them).
+const std::vector<double>* optional_field(const ParticleStore& p, const char* name) {
+  return p.has_field(name) ? &p.field(p.field_index(name)) : nullptr;
+}
+}  // namespace
+
+void OutletModule::end_of_step(Simulation& sim) {
+  auto& p = sim.particles;
+  const std::vector<double>* target = optional_field(p, "breakage.target_radius");
+  const std::vector<double>* generation = optional_field(p, "breakage.generation");
+  std::size_t marked = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.flags[i] & pflag::remove) continue;
+    for (std::size_t k = 0; k < outlets_.size(); ++k) {
+      if (!outlets_[k].captures(p.x[i])) continue;
+      RemovedParticle r;
+      r.time = sim.time;
+      r.step = sim.step_count;
+      r.id = p.id[i];
+      r.mass = p.mass[i];
+      r.diameter = 2 * std::max(p.radius[i], target ? (*target)[i] : 0.0);
+      r.outlet = static_cast<std::uint32_t>(k);
+      r.generation = generation ? static_cast<std::uint32_t>((*generation)[i]) : 0;
+      r.material = p.material[i];
+      log_.push_back(r);
+      // the energy that leaves with it: kinetic, and potential relative to the origin
+      sim.ledger.removed += 0.5 * p.mass[i] * norm2(p.v[i]) + 0.5 * p.inertia[i] * norm2(p.w[i]) -
+                            p.mass[i] * dot(sim.gravity, p.x[i]);
+      p.flags[i] |= pflag::remove;
+      ++marked;
+      break;
+    }
+  }
+  if (marked == 0) return;
+  p.compact();
+  sim.particles_changed();
+}
+
+double OutletModule::removed_mass() const {
+  double m = 0;
+  for (const auto& r : log_) m += r.mass;
+  return m;
+}
+
+void OutletModule::sample(const Simulation& sim) {
+  std::vector<double> count(outlets_.size(), 0.0), mass(outlets_.size(), 0.0);
+  for (const auto& r : log_) {
+    count[r.outlet] += 1;
+    mass[r.outlet] += r.mass;
+  }
+  samples_.push_back(sim.time);
+  for (std::size_t k = 0; k < outlets_.size(); ++k) {
+    samples_.push_back(count[k]);
+    samples_.push_back(mass[k]);
+  }
+}
+
+std::vector<Table> OutletModule::tables(const Simulation& sim) const {
+  Table removed("outlet_log", {{"time", "s"},
+                               {"step", "-"},
+                               {"outlet", "-"},
+                               {"id", "-"},
+                               {"material", "-"},
+                               {"mass", "kg"},
+                               {"diameter", "m"},
+                               {"generation", "-"}});
+  for (const auto& r : log_)
+    removed.add_row({r.time, r.step, outlets_.at(r.outlet).name, r.id,
+                     sim.materials.material(r.material).name, r.mass, r.diameter, r.generation});
+  std::vector<Column> cols{{"time", "s"}};
+  for (const auto& o : outlets_) {
+    cols.push_back({o.name + "_count", "-"});
+    cols.push_back({o.name + "_mass", "kg"});
+  }
+  Table totals("outlets", cols);
+  const std::size_t width = 1 + 2 * outlets_.size();
+  for (std::size_t s = 0; s + width <= samples_.size(); s += width) {
+    std::vector<Cell> row{samples_[s]};
+    for (std::size_t k = 0; k < outlets_.size(); ++k) {
+      row.emplace_back(static_cast<std::uint64_t>(samples_[s + 1 + 2 * k]));
+      row.emplace_back(samples_[s + 2 + 2 * k]);
+    }
+    totals.add_row(row);
+  }
+  return {removed, totals};
+}
+
+void OutletModule::save(Archive& a) const {
+  a.put("outlets/log", log_);
+  a.put("outlets/samples", samples_);
+}
+
+void OutletModule::load(const Archive& a) {
+  log_ = a.get<RemovedParticle>("outlets/log");
+  samples_ = a.get<double>("outlets/samples");
+  for (const auto& r : log_)
+    if (r.outlet >= outlets_.size() || !(r.mass > 0) || !(r.diameter > 0))
+      throw Error(
+          fmt::format("checkpoint entry 'outlets/log' holds a row of outlet {} (the case "
+                      "has {}) or a mass/diameter that is not positive",
+                      r.outlet, outlets_.size()));
+  if (samples_.size() % (1 + 2 * outlets_.size()) != 0)
+    throw Error("checkpoint entry 'outlets/samples' does not hold whole rows");
+}
+
+void OutletModule::restored(Simulation& sim) {
+  for (const auto& r : log_)
+    if (r.material >= sim.materials.size())
+      throw Error(fmt::format("checkpoint entry 'outlets/log' names material {}, the case has {}",
+                              r.material, sim.materials.size()));
+}
+
+}  // namespace comminute

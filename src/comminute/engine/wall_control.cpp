@@ -1,0 +1,98 @@
+#include "comminute/engine/wall_control.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "comminute/core/error.hpp"
+#include "comminute/engine/simulation.hpp"
+
+namespace comminute {
+
+WallControlModule::WallControlModule(std::vector<WallControlSpec> walls)
+    : specs_(std::move(walls)), displacement_(specs_.size(), 0.0) {}
+
+double WallControlModule::force(const Simulation& sim, std::size_t k) const {
+  return -dot(sim.walls.at(specs_[k].wall)->force, specs_[k].direction);
+}
+
+void WallControlModule::setup(Simulation& sim) {
+  for (const auto& s : specs_) {
+    Wall& w = *sim.walls.at(s.wall);
+    w.kinematics.velocity = {};
+    // dead weight from rest: the first step moves at the mid-step velocity 0 + a dt/2, with the
+    // particles' force at t = 0 taken as zero (the forces are computed after set-up)
+    if (s.mode == WallControlSpec::Mode::dead_weight)
+      w.kinematics.velocity = (0.5 * sim.dt * dot(sim.gravity, s.direction)) * s.direction;
+  }
+}
+
+void WallControlModule::post_force(Simulation& sim) {
+  for (std::size_t k = 0; k < specs_.size(); ++k) {
+    const WallControlSpec& s = specs_[k];
+    Wall& w = *sim.walls[s.wall];
+    const double v_now = dot(w.kinematics.velocity, s.direction);
+    displacement_[k] += v_now * sim.dt;  // the wall moved with it in this step's drift
+    double v_next = 0;
+    if (s.mode == WallControlSpec::Mode::servo) {
+      // PFC servo (Itasca) / Thornton (Géotechnique 2000): v = G (F_target − F), |v| ≤ v_max
+      v_next = std::clamp(s.gain * (s.target_force - force(sim, k)), -s.max_speed, s.max_speed);
+    } else {
+      // Newton's second law along n, m dv/dt = m g·n + F·n, leapfrog (velocity Verlet)
+      const double a = dot(sim.gravity, s.direction) + dot(w.force, s.direction) / s.mass;
+      v_next = v_now + a * sim.dt;
+    }
+    w.kinematics.velocity = v_next * s.direction;
+  }
+}
+
+void WallControlModule::sample(const Simulation& sim) {
+  samples_.push_back(sim.time);
+  for (std::size_t k = 0; k < specs_.size(); ++k) {
+    const double f = force(sim, k);
+    samples_.insert(
+        samples_.end(),
+        {displacement_[k], dot(sim.walls[specs_[k].wall]->kinematics.velocity, specs_[k].direction),
+         f, specs_[k].area > 0 ? f / specs_[k].area : 0.0});
+  }
+}
+
+std::vector<Table> WallControlModule::tables(const Simulation& sim) const {
+  std::vector<Column> cols{{"time", "s"}};
+  for (const auto& s : specs_) {
+    const std::string& n = sim.walls.at(s.wall)->name;
+    cols.push_back({n + "_displacement", "m"});
+    cols.push_back({n + "_velocity", "m/s"});
+    cols.push_back({n + "_force", "N"});
+    cols.push_back({n + "_stress", "Pa"});
+  }
+  Table t("wall_control", cols);
+  const std::size_t width = 1 + 4 * specs_.size();
+  for (std::size_t s = 0; s + width <= samples_.size(); s += width)
+    t.add_row(std::vector<Cell>(samples_.begin() + static_cast<std::ptrdiff_t>(s),
+                                samples_.begin() + static_cast<std::ptrdiff_t>(s + width)));
+  return {t};
+}
+
+void WallControlModule::save(Archive& a) const {
+  a.put("wall_control/displacement", displacement_);
+  a.put("wall_control/samples", samples_);
+}
+
+void WallControlModule::load(const Archive& a) {
+  displacement_ = a.get<double>("wall_control/displacement");
+  samples_ = a.get<double>("wall_control/samples");
+  if (displacement_.size() != specs_.size())
+    throw Error(
+        fmt::format("checkpoint entry 'wall_control/displacement' holds {} walls, the "
+                    "case {}",
+                    displacement_.size(), specs_.size()));
+  for (double d : displacement_)
+    if (!std::isfinite(d))
+      throw Error("checkpoint entry 'wall_control/displacement' is not finite");
+  if (samples_.size() % (1 + 4 * specs_.size()) != 0)
+    throw Error("checkpoint entry 'wall_control/samples' does not hold whole rows");
+}
+
+}  // namespace comminute

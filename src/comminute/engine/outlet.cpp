@@ -13,7 +13,21 @@ bool OutletSpec::captures(const Vec3& x) const {
   return half_space ? dot(x - point, normal) > 0 : region.contains(x, 0.0);
 }
 
-OutletModule::OutletModule(std::vector<OutletSpec> outlets) : outlets_(std::move(outlets)) {}
+namespace {
+SampleRows totals_columns(const std::vector<OutletSpec>& outlets) {
+  std::vector<Column> cols{{"time", "s"}};
+  std::vector<bool> counts{false};
+  for (const auto& o : outlets) {
+    cols.push_back({o.name + "_count", "-"});
+    cols.push_back({o.name + "_mass", "kg"});
+    counts.insert(counts.end(), {true, false});
+  }
+  return SampleRows(std::move(cols), std::move(counts));
+}
+}  // namespace
+
+OutletModule::OutletModule(std::vector<OutletSpec> outlets)
+    : outlets_(std::move(outlets)), totals_(totals_columns(outlets_)) {}
 
 namespace {
 // Per-particle fields the breakage module may have registered (the engine does not need them).
@@ -66,11 +80,9 @@ void OutletModule::sample(const Simulation& sim) {
     count[r.outlet] += 1;
     mass[r.outlet] += r.mass;
   }
-  samples_.push_back(sim.time);
-  for (std::size_t k = 0; k < outlets_.size(); ++k) {
-    samples_.push_back(count[k]);
-    samples_.push_back(mass[k]);
-  }
+  std::vector<double> row;
+  for (std::size_t k = 0; k < outlets_.size(); ++k) row.insert(row.end(), {count[k], mass[k]});
+  totals_.add(sim.time, row);
 }
 
 std::vector<Table> OutletModule::tables(const Simulation& sim) const {
@@ -85,40 +97,23 @@ std::vector<Table> OutletModule::tables(const Simulation& sim) const {
   for (const auto& r : log_)
     removed.add_row({r.time, r.step, outlets_.at(r.outlet).name, r.id,
                      sim.materials.material(r.material).name, r.mass, r.diameter, r.generation});
-  std::vector<Column> cols{{"time", "s"}};
-  for (const auto& o : outlets_) {
-    cols.push_back({o.name + "_count", "-"});
-    cols.push_back({o.name + "_mass", "kg"});
-  }
-  Table totals("outlets", cols);
-  const std::size_t width = 1 + 2 * outlets_.size();
-  for (std::size_t s = 0; s + width <= samples_.size(); s += width) {
-    std::vector<Cell> row{samples_[s]};
-    for (std::size_t k = 0; k < outlets_.size(); ++k) {
-      row.emplace_back(static_cast<std::uint64_t>(samples_[s + 1 + 2 * k]));
-      row.emplace_back(samples_[s + 2 + 2 * k]);
-    }
-    totals.add_row(row);
-  }
-  return {removed, totals};
+  return {removed, totals_.table("outlets")};
 }
 
 void OutletModule::save(Archive& a) const {
   a.put("outlets/log", log_);
-  a.put("outlets/samples", samples_);
+  totals_.save(a, "outlets/samples");
 }
 
 void OutletModule::load(const Archive& a) {
   log_ = a.get<RemovedParticle>("outlets/log");
-  samples_ = a.get<double>("outlets/samples");
+  totals_.load(a, "outlets/samples");
   for (const auto& r : log_)
     if (r.outlet >= outlets_.size() || !(r.mass > 0) || !(r.diameter > 0))
       throw Error(
           fmt::format("checkpoint entry 'outlets/log' holds a row of outlet {} (the case "
                       "has {}) or a mass/diameter that is not positive",
                       r.outlet, outlets_.size()));
-  if (samples_.size() % (1 + 2 * outlets_.size()) != 0)
-    throw Error("checkpoint entry 'outlets/samples' does not hold whole rows");
 }
 
 void OutletModule::restored(Simulation& sim) {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "comminute/engine/module.hpp"
+#include "comminute/engine/sample_rows.hpp"
 #include "comminute/engine/series_source.hpp"
 #include "comminute/geometry/region.hpp"
 
@@ -63,7 +64,7 @@ class OutletModule final : public Module, public SeriesSource {
  private:
   std::vector<OutletSpec> outlets_;
   std::vector<RemovedParticle> log_;
-  std::vector<double> samples_;  // per sample: time, then count and mass per outlet
+  SampleRows totals_;  // per sample: time, then count and mass per outlet
 };
 
 }  // namespace comminute

@@ -7,8 +7,23 @@
 
 namespace comminute {
 
+namespace {
+SampleRows crossing_columns(const std::vector<SamplingPlaneSpec>& planes) {
+  std::vector<Column> cols{{"time", "s"}};
+  std::vector<bool> counts{false};
+  for (const auto& s : planes) {
+    cols.push_back({s.name + "_crossings_positive", "-"});
+    cols.push_back({s.name + "_crossings_negative", "-"});
+    cols.push_back({s.name + "_mass_positive", "kg"});
+    cols.push_back({s.name + "_mass_negative", "kg"});
+    counts.insert(counts.end(), {true, true, false, false});
+  }
+  return SampleRows(std::move(cols), std::move(counts));
+}
+}  // namespace
+
 SamplingPlaneModule::SamplingPlaneModule(std::vector<SamplingPlaneSpec> planes)
-    : planes_(std::move(planes)), counts_(planes_.size()) {}
+    : planes_(std::move(planes)), counts_(planes_.size()), samples_(crossing_columns(planes_)) {}
 
 void SamplingPlaneModule::register_fields(ParticleStore& p) {
   fields_.clear();
@@ -41,51 +56,29 @@ void SamplingPlaneModule::end_of_step(Simulation& sim) {
 }
 
 void SamplingPlaneModule::sample(const Simulation& sim) {
-  samples_.push_back(sim.time);
+  std::vector<double> row;
   for (const auto& c : counts_)
-    samples_.insert(samples_.end(),
-                    {static_cast<double>(c.positive), static_cast<double>(c.negative),
-                     c.mass_positive, c.mass_negative});
+    row.insert(row.end(), {static_cast<double>(c.positive), static_cast<double>(c.negative),
+                           c.mass_positive, c.mass_negative});
+  samples_.add(sim.time, row);
 }
 
 std::vector<Table> SamplingPlaneModule::tables(const Simulation&) const {
-  std::vector<Column> cols{{"time", "s"}};
-  for (const auto& s : planes_) {
-    cols.push_back({s.name + "_crossings_positive", "-"});
-    cols.push_back({s.name + "_crossings_negative", "-"});
-    cols.push_back({s.name + "_mass_positive", "kg"});
-    cols.push_back({s.name + "_mass_negative", "kg"});
-  }
-  Table t("sampling_planes", cols);
-  const std::size_t width = 1 + 4 * planes_.size();
-  for (std::size_t s = 0; s + width <= samples_.size(); s += width) {
-    std::vector<Cell> row{samples_[s]};
-    for (std::size_t k = 0; k < planes_.size(); ++k) {
-      const double* q = &samples_[s + 1 + 4 * k];
-      row.emplace_back(static_cast<std::uint64_t>(q[0]));
-      row.emplace_back(static_cast<std::uint64_t>(q[1]));
-      row.emplace_back(q[2]);
-      row.emplace_back(q[3]);
-    }
-    t.add_row(row);
-  }
-  return {t};
+  return {samples_.table("sampling_planes")};
 }
 
 void SamplingPlaneModule::save(Archive& a) const {
   a.put("sampling_planes/counts", counts_);
-  a.put("sampling_planes/samples", samples_);
+  samples_.save(a, "sampling_planes/samples");
 }
 
 void SamplingPlaneModule::load(const Archive& a) {
   counts_ = a.get<PlaneCrossings>("sampling_planes/counts");
-  samples_ = a.get<double>("sampling_planes/samples");
+  samples_.load(a, "sampling_planes/samples");
   if (counts_.size() != planes_.size())
     throw Error(
         fmt::format("checkpoint entry 'sampling_planes/counts' holds {} planes, the case {}",
                     counts_.size(), planes_.size()));
-  if (samples_.size() % (1 + 4 * planes_.size()) != 0)
-    throw Error("checkpoint entry 'sampling_planes/samples' does not hold whole rows");
 }
 
 }  // namespace comminute

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "comminute/engine/module.hpp"
+#include "comminute/engine/sample_rows.hpp"
 #include "comminute/engine/series_source.hpp"
 #include "comminute/particles/particle_store.hpp"
 
@@ -51,7 +52,7 @@ class SamplingPlaneModule final : public Module, public SeriesSource {
   std::vector<SamplingPlaneSpec> planes_;
   std::vector<std::size_t> fields_;
   std::vector<PlaneCrossings> counts_;
-  std::vector<double> samples_;  // per sample: time, then 4 numbers per plane
+  SampleRows samples_;  // per sample: time, then 4 numbers per plane
 };
 
 }  // namespace comminute

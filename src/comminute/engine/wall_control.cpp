@@ -10,8 +10,23 @@
 
 namespace comminute {
 
+namespace {
+SampleRows motion_columns(const std::vector<WallControlSpec>& walls) {
+  std::vector<Column> cols{{"time", "s"}};
+  for (const auto& s : walls) {
+    cols.push_back({s.name + "_displacement", "m"});
+    cols.push_back({s.name + "_velocity", "m/s"});
+    cols.push_back({s.name + "_force", "N"});
+    cols.push_back({s.name + "_stress", "Pa"});
+  }
+  return SampleRows(std::move(cols), {});
+}
+}  // namespace
+
 WallControlModule::WallControlModule(std::vector<WallControlSpec> walls)
-    : specs_(std::move(walls)), displacement_(specs_.size(), 0.0) {}
+    : specs_(std::move(walls)),
+      displacement_(specs_.size(), 0.0),
+      samples_(motion_columns(specs_)) {}
 
 double WallControlModule::force(const Simulation& sim, std::size_t k) const {
   return -dot(sim.walls.at(specs_[k].wall)->force, specs_[k].direction);
@@ -48,41 +63,29 @@ void WallControlModule::post_force(Simulation& sim) {
 }
 
 void WallControlModule::sample(const Simulation& sim) {
-  samples_.push_back(sim.time);
+  std::vector<double> row;
   for (std::size_t k = 0; k < specs_.size(); ++k) {
+    const WallControlSpec& s = specs_[k];
     const double f = force(sim, k);
-    samples_.insert(
-        samples_.end(),
-        {displacement_[k], dot(sim.walls[specs_[k].wall]->kinematics.velocity, specs_[k].direction),
-         f, specs_[k].area > 0 ? f / specs_[k].area : 0.0});
+    row.insert(row.end(),
+               {displacement_[k], dot(sim.walls[s.wall]->kinematics.velocity, s.direction), f,
+                s.area > 0 ? f / s.area : 0.0});
   }
+  samples_.add(sim.time, row);
 }
 
-std::vector<Table> WallControlModule::tables(const Simulation& sim) const {
-  std::vector<Column> cols{{"time", "s"}};
-  for (const auto& s : specs_) {
-    const std::string& n = sim.walls.at(s.wall)->name;
-    cols.push_back({n + "_displacement", "m"});
-    cols.push_back({n + "_velocity", "m/s"});
-    cols.push_back({n + "_force", "N"});
-    cols.push_back({n + "_stress", "Pa"});
-  }
-  Table t("wall_control", cols);
-  const std::size_t width = 1 + 4 * specs_.size();
-  for (std::size_t s = 0; s + width <= samples_.size(); s += width)
-    t.add_row(std::vector<Cell>(samples_.begin() + static_cast<std::ptrdiff_t>(s),
-                                samples_.begin() + static_cast<std::ptrdiff_t>(s + width)));
-  return {t};
+std::vector<Table> WallControlModule::tables(const Simulation&) const {
+  return {samples_.table("wall_control")};
 }
 
 void WallControlModule::save(Archive& a) const {
   a.put("wall_control/displacement", displacement_);
-  a.put("wall_control/samples", samples_);
+  samples_.save(a, "wall_control/samples");
 }
 
 void WallControlModule::load(const Archive& a) {
   displacement_ = a.get<double>("wall_control/displacement");
-  samples_ = a.get<double>("wall_control/samples");
+  samples_.load(a, "wall_control/samples");
   if (displacement_.size() != specs_.size())
     throw Error(
         fmt::format("checkpoint entry 'wall_control/displacement' holds {} walls, the "
@@ -91,8 +94,6 @@ void WallControlModule::load(const Archive& a) {
   for (double d : displacement_)
     if (!std::isfinite(d))
       throw Error("checkpoint entry 'wall_control/displacement' is not finite");
-  if (samples_.size() % (1 + 4 * specs_.size()) != 0)
-    throw Error("checkpoint entry 'wall_control/samples' does not hold whole rows");
 }
 
 }  // namespace comminute

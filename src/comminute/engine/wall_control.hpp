@@ -18,6 +18,7 @@
 
 #include "comminute/core/vec3.hpp"
 #include "comminute/engine/module.hpp"
+#include "comminute/engine/sample_rows.hpp"
 #include "comminute/engine/series_source.hpp"
 
 namespace comminute {
@@ -25,6 +26,7 @@ namespace comminute {
 struct WallControlSpec {
   enum class Mode { servo, dead_weight } mode = Mode::servo;
   std::size_t wall = 0;     // index in Simulation::walls
+  std::string name;         // the wall's name, for the output columns
   Vec3 direction;           // unit, the line of motion (into the particles for a servo)
   double area = 0;          // m², > 0: stress = force / area is reported (servo target in stress)
   double target_force = 0;  // N (servo)
@@ -54,7 +56,7 @@ class WallControlModule final : public Module, public SeriesSource {
  private:
   std::vector<WallControlSpec> specs_;
   std::vector<double> displacement_;  // m, travelled along the direction since the start
-  std::vector<double> samples_;       // per sample: time, then 4 numbers per wall
+  SampleRows samples_;                // per sample: time, then 4 numbers per wall
 };
 
 }  // namespace comminute

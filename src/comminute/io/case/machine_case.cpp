@@ -99,6 +99,7 @@ void add_wall_controls(const std::vector<CaseTable>& walls, Simulation& sim) {
                       "the prescribed motion");
     WallControlSpec s;
     s.wall = k;
+    s.name = sim.walls[k]->name;
     s.mode = c->choice("mode", {"servo", "dead_weight"}) == "servo"
                  ? WallControlSpec::Mode::servo
                  : WallControlSpec::Mode::dead_weight;

@@ -51,10 +51,10 @@ void WallControlModule::post_force(Simulation& sim) {
     displacement_[k] += v_now * sim.dt;  // the wall moved with it in this step's drift
     double v_next = 0;
     if (s.mode == WallControlSpec::Mode::servo) {
-      // PFC servo (Itasca) / Thornton (Géotechnique 2000): v = G (F_target − F), |v| ≤ v_max
+      // Thornton, Géotechnique 50 (2000) 43, servo walls (as PFC): v = G (F_target − F), eq. W1
       v_next = std::clamp(s.gain * (s.target_force - force(sim, k)), -s.max_speed, s.max_speed);
     } else {
-      // Newton's second law along n, m dv/dt = m g·n + F·n, leapfrog (velocity Verlet)
+      // Newton's second law along n, m dv/dt = m g·n + F·n, leapfrog: docs/models.md eq. W2
       const double a = dot(sim.gravity, s.direction) + dot(w.force, s.direction) / s.mass;
       v_next = v_now + a * sim.dt;
     }

@@ -133,7 +133,7 @@ TEST(WallControl, DeadWeightComesToRestCarriedByTheBed) {
   sim->setup();
   double bed_mass = 0;
   for (double mass : sim->particles.mass) bed_mass += mass;
-  sim->run(20000);  // 0.08 s: the weight's oscillation on the bed has decayed
+  sim->run(20000);          // 0.08 s: the weight's oscillation on the bed has decayed
   const int window = 5000;  // 0.02 s
   double stress = 0, bottom = 0;
   for (int k = 0; k < window; ++k) {

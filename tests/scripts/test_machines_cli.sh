@@ -2,8 +2,9 @@
 # Machines through `comminute run`: (1) the discharge example, shortened: every particle the
 # outlet removed is one row of outlet_log.csv, the last row of outlets.csv counts them, and the
 # particles that remain plus those removed are the ones inserted; (2) a [[stop]] condition ends a
-# run early with exit status 0 (docs/case-file.md, "[[stop]]"), a log line and one row of
-# stop.csv; a restart from its checkpoint stops again at once.
+# run early with exit status 0 (the piston is a servo: wall_control.csv) (docs/case-file.md, "[[stop]]"), a log line and one row of
+# stop.csv, and the servo piston it watches writes wall_control.csv; a restart from its checkpoint
+# stops again at once.
 # usage: test_machines_cli.sh <comminute> <source-dir>
 set -euo pipefail
 bin=$1 src=$2
@@ -37,7 +38,7 @@ print(f"ok: {len(log)} removed and logged once, {remaining} remain, "
       f"{planes[-1]['below_bin_crossings_positive [-]']} crossed the sampling plane")
 PY
 
-# 2. a sphere pressed by a piston at 0.05 m/s; stop at 2 N on the piston
+# 2. a sphere pressed by a servo piston (target 3 N, at most 0.05 m/s); stop at 2 N on the piston
 cat > "$tmp/stop.toml" <<'TOML'
 [simulation]
 end_time = 1.0
@@ -59,8 +60,8 @@ name = "piston"
 type = "plane"
 point = [0.0, 0.0, 0.00205]
 normal = [0.0, 0.0, -1.0]
-velocity = [0.0, 0.0, -0.05]
 material = "glass"
+control = { mode = "servo", target_force = 3.0, gain = 0.02, max_speed = 0.05 }
 [[insert]]
 type = "fill"
 material = "glass"
@@ -88,6 +89,10 @@ ts = list(csv.DictReader(open(f"{d}/timeseries.csv")))
 assert float(row["quantity [N or Pa]"]) >= 2.0, row
 assert float(row["time [s]"]) < 1.0, row
 assert abs(float(ts[-1]["time [s]"]) - float(row["time [s]"])) == 0, (ts[-1]["time [s]"], row)
+wc = list(csv.DictReader(open(f"{d}/wall_control.csv")))
+assert float(wc[0]["piston_velocity [m/s]"]) == 0.0, wc[0]
+assert float(wc[-1]["piston_force [N]"]) >= 2.0, wc[-1]
+assert float(wc[-1]["piston_displacement [m]"]) > 5e-5, wc[-1]  # it reached the sphere
 print(f"ok: stopped at t = {row['time [s]']} s, step {row['step [-]']}, F = {row['quantity [N or Pa]']} N")
 PY
 # a restart from the stop's checkpoint has nothing to do but stop again

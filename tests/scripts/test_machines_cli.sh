@@ -2,7 +2,7 @@
 # Machines through `comminute run`: (1) the discharge example, shortened: every particle the
 # outlet removed is one row of outlet_log.csv, the last row of outlets.csv counts them, and the
 # particles that remain plus those removed are the ones inserted; (2) a [[stop]] condition ends a
-# run early with exit status 0 (the piston is a servo: wall_control.csv) (docs/case-file.md, "[[stop]]"), a log line and one row of
+# run early with exit status 0 (docs/case-file.md, "[[stop]]"), a log line and one row of
 # stop.csv, and the servo piston it watches writes wall_control.csv; a restart from its checkpoint
 # stops again at once.
 # usage: test_machines_cli.sh <comminute> <source-dir>

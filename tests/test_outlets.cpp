@@ -195,3 +195,31 @@ TEST(Outlet, LogAndCrossingCountsSurviveACheckpoint) {
   EXPECT_EQ(pa->crossings()[0].mass_positive, pb->crossings()[0].mass_positive);
   EXPECT_GT(pa->crossings()[0].positive, 0u);
 }
+
+TEST(Outlet, LogsTheCompositionOfEachRemovedParticle) {
+  DemSetup d;
+  d.gravity = {0, 0, -9.81};
+  auto sim = make_simulation(d);
+  add_falling_stream(*sim, 50, 0.0, 13);
+  // two mineral phases as the composition criterion registers them: C_0 + C_1 = 1 per particle
+  auto& p = sim->particles;
+  const std::size_t c0 = p.add_field("composition.0", 1.0), c1 = p.add_field("composition.1", 0.0);
+  std::map<std::uint64_t, double> phase1;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.field(c1)[i] = 0.01 * static_cast<double>(i);
+    p.field(c0)[i] = 1 - p.field(c1)[i];
+    phase1[p.id[i]] = p.field(c1)[i];
+  }
+  OutletModule* outlet = add_outlet_below(*sim, -0.005);
+  sim->dt = 1e-5;
+  sim->setup();
+  sim->run(5000);
+  ASSERT_EQ(outlet->composition_fields(), 2u);
+  ASSERT_EQ(outlet->log().size(), 50u);
+  for (std::size_t n = 0; n < outlet->log().size(); ++n) {
+    EXPECT_EQ(outlet->compositions()[2 * n + 1], phase1.at(outlet->log()[n].id));
+    EXPECT_EQ(outlet->compositions()[2 * n], 1 - phase1.at(outlet->log()[n].id));
+  }
+  const std::vector<Table> tables = outlet->series_source()->tables(*sim);
+  EXPECT_EQ(tables[0].columns().back().header(), "composition_1 [-]");
+}

@@ -36,6 +36,20 @@ const std::vector<double>* optional_field(const ParticleStore& p, const char* na
 }
 }  // namespace
 
+namespace {
+// The fields "composition.0", "composition.1", ... that exist, in order.
+std::vector<std::size_t> composition_fields_of(const ParticleStore& p) {
+  std::vector<std::size_t> f;
+  while (p.has_field("composition." + std::to_string(f.size())))
+    f.push_back(p.field_index("composition." + std::to_string(f.size())));
+  return f;
+}
+}  // namespace
+
+void OutletModule::setup(Simulation& sim) {
+  composition_ = composition_fields_of(sim.particles);
+}
+
 void OutletModule::end_of_step(Simulation& sim) {
   auto& p = sim.particles;
   const std::vector<double>* target = optional_field(p, "breakage.target_radius");
@@ -55,6 +69,7 @@ void OutletModule::end_of_step(Simulation& sim) {
       r.generation = generation ? static_cast<std::uint32_t>((*generation)[i]) : 0;
       r.material = p.material[i];
       log_.push_back(r);
+      for (std::size_t f : composition_) compositions_.push_back(p.field(f)[i]);
       // the energy that leaves with it: kinetic, and potential relative to the origin
       sim.ledger.removed += 0.5 * p.mass[i] * norm2(p.v[i]) + 0.5 * p.inertia[i] * norm2(p.w[i]) -
                             p.mass[i] * dot(sim.gravity, p.x[i]);
@@ -86,27 +101,38 @@ void OutletModule::sample(const Simulation& sim) {
 }
 
 std::vector<Table> OutletModule::tables(const Simulation& sim) const {
-  Table removed("outlet_log", {{"time", "s"},
-                               {"step", "-"},
-                               {"outlet", "-"},
-                               {"id", "-"},
-                               {"material", "-"},
-                               {"mass", "kg"},
-                               {"diameter", "m"},
-                               {"generation", "-"}});
-  for (const auto& r : log_)
-    removed.add_row({r.time, r.step, outlets_.at(r.outlet).name, r.id,
-                     sim.materials.material(r.material).name, r.mass, r.diameter, r.generation});
+  std::vector<Column> cols{{"time", "s"},     {"step", "-"},      {"outlet", "-"},
+                           {"id", "-"},       {"material", "-"},  {"mass", "kg"},
+                           {"diameter", "m"}, {"generation", "-"}};
+  for (std::size_t k = 0; k < composition_.size(); ++k)
+    cols.push_back({"composition_" + std::to_string(k), "-"});
+  Table removed("outlet_log", cols);
+  for (std::size_t n = 0; n < log_.size(); ++n) {
+    const RemovedParticle& r = log_[n];
+    std::vector<Cell> row{r.time,
+                          r.step,
+                          outlets_.at(r.outlet).name,
+                          r.id,
+                          sim.materials.material(r.material).name,
+                          r.mass,
+                          r.diameter,
+                          r.generation};
+    for (std::size_t k = 0; k < composition_.size(); ++k)
+      row.emplace_back(compositions_[n * composition_.size() + k]);
+    removed.add_row(row);
+  }
   return {removed, totals_.table("outlets")};
 }
 
 void OutletModule::save(Archive& a) const {
   a.put("outlets/log", log_);
+  a.put("outlets/compositions", compositions_);
   totals_.save(a, "outlets/samples");
 }
 
 void OutletModule::load(const Archive& a) {
   log_ = a.get<RemovedParticle>("outlets/log");
+  compositions_ = a.get<double>("outlets/compositions");
   totals_.load(a, "outlets/samples");
   for (const auto& r : log_)
     if (r.outlet >= outlets_.size() || !(r.mass > 0) || !(r.diameter > 0))
@@ -117,6 +143,12 @@ void OutletModule::load(const Archive& a) {
 }
 
 void OutletModule::restored(Simulation& sim) {
+  composition_ = composition_fields_of(sim.particles);
+  if (compositions_.size() != log_.size() * composition_.size())
+    throw Error(
+        fmt::format("checkpoint entry 'outlets/compositions' holds {} values, not {} per "
+                    "row of 'outlets/log'",
+                    compositions_.size(), composition_.size()));
   for (const auto& r : log_)
     if (r.material >= sim.materials.size())
       throw Error(fmt::format("checkpoint entry 'outlets/log' names material {}, the case has {}",

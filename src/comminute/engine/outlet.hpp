@@ -4,7 +4,8 @@
 // particle whose centre lies inside an outlet's region (or beyond its plane, on the side the
 // plane's normal points to) is removed through the particle store's one removal path
 // (pflag::remove, ParticleStore::compact(), Simulation::particles_changed()), and one row is
-// appended to the log: time, step, outlet, id, material, mass, diameter, generation. Its kinetic
+// appended to the log: time, step, outlet, id, material, mass, diameter, generation (and the
+// composition when the run has per-particle fields "composition.<k>"). Its kinetic
 // and gravitational potential energy are booked as removed energy (EnergyLedger::removed), so
 // the run's energy balance stays closed.
 // Tables (docs/outputs.md): outlet_log.csv (one row per removed particle, every row once) and
@@ -51,6 +52,7 @@ class OutletModule final : public Module, public SeriesSource {
   void end_of_step(Simulation& sim) override;
   void save(Archive& a) const override;
   void load(const Archive& a) override;
+  void setup(Simulation& sim) override;
   void restored(Simulation& sim) override;
   SeriesSource* series_source() override { return this; }
   void sample(const Simulation& sim) override;
@@ -59,12 +61,18 @@ class OutletModule final : public Module, public SeriesSource {
   const std::vector<OutletSpec>& outlets() const { return outlets_; }
   // Every removed particle, in the order of removal.
   const std::vector<RemovedParticle>& log() const { return log_; }
+  // Composition of the removed particles when the run has per-particle fields "composition.<k>"
+  // (mineral phases): composition_fields() values per row of log(), in the order of the fields.
+  const std::vector<double>& compositions() const { return compositions_; }
+  std::size_t composition_fields() const { return composition_.size(); }
   double removed_mass() const;  // kg, all outlets
 
  private:
   std::vector<OutletSpec> outlets_;
   std::vector<RemovedParticle> log_;
-  SampleRows totals_;  // per sample: time, then count and mass per outlet
+  std::vector<std::size_t> composition_;  // field indices of composition.0, composition.1, ...
+  std::vector<double> compositions_;      // per removed particle, one value per composition field
+  SampleRows totals_;                     // per sample: time, then count and mass per outlet
 };
 
 }  // namespace comminute

@@ -465,8 +465,8 @@ TEST(PeriodicAxes, EveryPairAcrossFacesIsListedOnce) {
   for (std::size_t q = 0; q < sim->pairs().size(); ++q) {
     const std::size_t i = sim->slot_owner(sim->pairs().first[q]),
                       j = sim->slot_owner(sim->pairs().second[q]);
-    const Vec3 d = sim->slot_position(sim->pairs().first[q]) -
-                   sim->slot_position(sim->pairs().second[q]);
+    const Vec3 d =
+        sim->slot_position(sim->pairs().first[q]) - sim->slot_position(sim->pairs().second[q]);
     if (norm(d) < p.radius[i] + p.radius[j])
       ++listed[{std::min(p.id[i], p.id[j]), std::max(p.id[i], p.id[j])}];
   }

@@ -80,7 +80,8 @@ void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t paren
   auto& p = sim.particles;
   std::vector<Sphere> neighbours;
   for (const Neighbour& nb : around)
-    neighbours.push_back({sim.pair_frame(nb.parent_seen, nb.seen, p.x[nb.slot]), p.radius[nb.slot]});
+    neighbours.push_back(
+        {sim.pair_frame(nb.parent_seen, nb.seen, p.x[nb.slot]), p.radius[nb.slot]});
   const MaterialBreakage& mat = *ctx.materials[p.material[parent]];
   EventRecord rec = rec_in;
   // A fragment that breaks while still growing counts at its final size.

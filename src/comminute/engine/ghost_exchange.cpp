@@ -116,14 +116,16 @@ void GhostExchange::load(const Archive& a, std::size_t n_owned) {
   auto owner = a.get<std::uint32_t>("periodic/ghost_owner");
   auto image = a.get<std::uint8_t>("periodic/ghost_image");
   if (image.size() != owner.size())
-    throw Error(fmt::format("checkpoint entry 'periodic/ghost_image' holds {} ghosts, "
-                            "'periodic/ghost_owner' {}",
-                            image.size(), owner.size()));
+    throw Error(
+        fmt::format("checkpoint entry 'periodic/ghost_image' holds {} ghosts, "
+                    "'periodic/ghost_owner' {}",
+                    image.size(), owner.size()));
   for (std::size_t g = 0; g < owner.size(); ++g)
     if (owner[g] >= n_owned || image[g] >= map.images().size())
-      throw Error(fmt::format("checkpoint entry 'periodic/ghost_owner': ghost {} (owner {}, image "
-                              "{}) is not an image of one of the {} particles",
-                              g, owner[g], image[g], n_owned));
+      throw Error(
+          fmt::format("checkpoint entry 'periodic/ghost_owner': ghost {} (owner {}, image "
+                      "{}) is not an image of one of the {} particles",
+                      g, owner[g], image[g], n_owned));
   owner_ = std::move(owner);
   image_ = std::move(image);
 }

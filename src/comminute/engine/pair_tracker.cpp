@@ -215,8 +215,8 @@ void PairTracker::load(const Archive& a, const ParticleStore& p, double skin,
   auto ids = a.get<std::uint64_t>("pairs/ids");
   auto large = a.get<std::uint8_t>("pairs/large");
   // (absent from checkpoints written before periodic boundaries: no labels)
-  auto labels = a.has("pairs/labels") ? a.get<std::uint64_t>("pairs/labels")
-                                      : std::vector<std::uint64_t>{};
+  auto labels =
+      a.has("pairs/labels") ? a.get<std::uint64_t>("pairs/labels") : std::vector<std::uint64_t>{};
   auto x_build = a.get<Vec3>("pairs/x_at_build");
   auto r_build = a.get<double>("pairs/r_at_build");
   auto tracked = a.get<std::uint32_t>("pairs/reach_tracked");
@@ -229,7 +229,8 @@ void PairTracker::load(const Archive& a, const ParticleStore& p, double skin,
     corrupt("pairs/ids", fmt::format("holds {} particles, the checkpoint {} and {} ghosts", n_build,
                                      p.size(), n_ghosts));
   if (!labels.empty() && labels.size() != n_build)
-    corrupt("pairs/labels", fmt::format("holds {} labels for {} particles", labels.size(), n_build));
+    corrupt("pairs/labels",
+            fmt::format("holds {} labels for {} particles", labels.size(), n_build));
   if (second.size() != first.size())
     corrupt("pairs/second",
             fmt::format("holds {} pairs, 'pairs/first' {}", second.size(), first.size()));

@@ -120,8 +120,7 @@ void Simulation::compute_forces() {
     labels = &ghosts_.labels(particles);
   }
   n_owned_ = particles.owned();
-  const bool rebuilt =
-      tracker_.update(particles, walls, options, pair_state_, wall_state_, labels);
+  const bool rebuilt = tracker_.update(particles, walls, options, pair_state_, wall_state_, labels);
   if (rebuilt && ghosts_.active()) ghosts_.turn_carried(tracker_.pairs().carried(), pair_state_);
   if (!forces_cleared_)  // set-up, or particles inserted/removed after the drift
     VelocityVerlet::start_forces(particles, gravity);

@@ -72,7 +72,9 @@ Vec3 PeriodicMap::point(const Vec3& x, const Shift& s) const {
   return y;
 }
 
-Vec3 PeriodicMap::vector(const Vec3& v, const Shift& s) const { return turn_vector(v, s[0]); }
+Vec3 PeriodicMap::vector(const Vec3& v, const Shift& s) const {
+  return turn_vector(v, s[0]);
+}
 
 Vec3 PeriodicMap::inverse_vector(const Vec3& v, const Shift& s) const {
   return turn_vector(v, -s[0]);

@@ -44,8 +44,10 @@ std::vector<Probe> face_probes(const PeriodicMap& map, const Vec3& lo, const Vec
     if (!map.periodic(a)) continue;
     const int b = (a + 1) % 3, c = (a + 2) % 3;
     // along the other axes: their periodic bounds, else where the particles start
-    const double b0 = map.periodic(b) ? map.lo()[b] : lo[b], b1 = map.periodic(b) ? map.hi()[b] : hi[b];
-    const double c0 = map.periodic(c) ? map.lo()[c] : lo[c], c1 = map.periodic(c) ? map.hi()[c] : hi[c];
+    const double b0 = map.periodic(b) ? map.lo()[b] : lo[b],
+                 b1 = map.periodic(b) ? map.hi()[b] : hi[b];
+    const double c0 = map.periodic(c) ? map.lo()[c] : lo[c],
+                 c1 = map.periodic(c) ? map.hi()[c] : hi[c];
     PeriodicMap::Shift s{0, 0, 0};
     s[static_cast<std::size_t>(a)] = 1;
     for (int i = 0; i < m; ++i)
@@ -88,8 +90,7 @@ void read_periodic(const CaseTable& root, Simulation& sim, const ParticleReach& 
   PeriodicMap map;
   if (auto sec = t->optional_table("sector")) {
     for (const char* a : kAxisNames)
-      if (t->has(a))
-        t->fail(a, "give either periodic axes or a [periodic.sector], not both");
+      if (t->has(a)) t->fail(a, "give either periodic axes or a [periodic.sector], not both");
     const std::string axis = sec->choice("axis", {"x", "y", "z"});
     const int ax = axis == "x" ? 0 : (axis == "y" ? 1 : 2);
     const Vec3 origin = sec->vec3("origin", Limits::any(), {});
@@ -106,7 +107,8 @@ void read_periodic(const CaseTable& root, Simulation& sim, const ParticleReach& 
       const Kinematics& k = w->kinematics;
       Vec3 v_perp = k.velocity, w_perp = k.angular_velocity, c_off = k.center - origin;
       v_perp[ax] = w_perp[ax] = c_off[ax] = 0;
-      if (norm(v_perp) > 0 || norm(w_perp) > 0 || (norm2(k.angular_velocity) > 0 && norm(c_off) > 0))
+      if (norm(v_perp) > 0 || norm(w_perp) > 0 ||
+          (norm2(k.angular_velocity) > 0 && norm(c_off) > 0))
         sec->fail("axis", fmt::format("wall '{}' moves other than along or about the sector axis: "
                                       "its motion would differ between sectors",
                                       w->name));

@@ -26,6 +26,20 @@ PeriodicMap box_map(bool x, bool y, bool z, double L) {
   return PeriodicMap::axes({x, y, z}, {0, 0, 0}, {L, L, L});
 }
 
+// A gas of 3 mm spheres (E = 50 MPa) on a jittered lattice of spacing a filling [0, cells a]^3,
+// random speeds up to `speed` per axis.
+std::unique_ptr<Simulation> lattice_gas(double restitution, double friction, double a, int cells,
+                                        double speed, std::uint64_t seed) {
+  DemSetup s;
+  s.youngs = 5e7;
+  s.restitution = restitution;
+  s.friction = friction;
+  auto sim = make_simulation(s);
+  Rng rng(seed);
+  lattice(*sim, 0.003, a, cells * a, speed, rng);
+  return sim;
+}
+
 // Forces (and torques) by particle id after the last step.
 std::map<std::uint64_t, std::pair<Vec3, Vec3>> forces_by_id(const Simulation& sim) {
   std::map<std::uint64_t, std::pair<Vec3, Vec3>> out;
@@ -72,16 +86,10 @@ TEST(PeriodicAxes, CrossingParticleKeepsItsVelocityExactly) {
 // acts on both bodies with opposite signs. Tolerance: 1e-12 of sum |m v| (a sum of ~10^5 forces
 // per step over 2000 steps, each rounded at 1e-16 relative).
 TEST(PeriodicAxes, MomentumOfACollidingBoxIsConserved) {
-  DemSetup s;
-  s.youngs = 5e7;
-  s.restitution = 0.7;
-  s.friction = 0.4;
-  auto sim = make_simulation(s);
-  Rng rng(5);
-  const double d = 0.003, a = 0.0032, L = 6 * a;
-  lattice(*sim, d, a, L, 2.0, rng);
+  const double a = 0.0032, L = 6 * a;
+  auto sim = lattice_gas(0.7, 0.4, a, 6, 2.0, 5);
   sim->set_periodic(box_map(true, true, true, L));
-  sim->dt = rayleigh_step(0.5 * d, s.youngs, s.poisson, s.density);
+  sim->dt = rayleigh_step(0.0015, 5e7, 0.3, 2500);
   sim->setup();
   const Vec3 p0 = sim->particles.total_momentum();
   double scale = 0;
@@ -96,6 +104,8 @@ TEST(PeriodicAxes, MomentumOfACollidingBoxIsConserved) {
         cross += sim->pairs().second[q] >= sim->particles.size() && sim->pair_state().active[q];
   }
   EXPECT_GT(max_ghosts, 0u);
+  RecordProperty("particles", std::to_string(sim->particles.size()));
+  RecordProperty("max_ghosts", std::to_string(max_ghosts));
   EXPECT_GT(cross, 0u);  // contacts across the faces happened
   EXPECT_LE(norm(sim->particles.total_momentum() - p0), 1e-12 * scale);
   EXPECT_GT(sim->observe().ledger.friction, 0.0);  // particles did rub
@@ -372,14 +382,8 @@ TEST(PeriodicSector, RotatingShellAboutTheAxisDrivesParticlesAcrossFaces) {
 
 namespace {
 std::unique_ptr<Simulation> periodic_gas(breakage::BreakageModule** mod, BreakageProbe* probe) {
-  DemSetup s;
-  s.youngs = 5e7;
-  s.restitution = 0.8;
-  s.friction = 0.3;
-  auto sim = make_simulation(s);
-  Rng rng(31);
-  const double d = 0.003, a = 0.0036, L = 7 * a;
-  lattice(*sim, d, a, L, 3.0, rng);
+  const double a = 0.0036, L = 7 * a;
+  auto sim = lattice_gas(0.8, 0.3, a, 7, 3.0, 31);
   sim->set_periodic(box_map(true, true, false, L));
   // z closed by two planes (parallel to the periodic axes: the same on both sides of each face)
   sim->walls.push_back(std::make_unique<PlaneWall>(Vec3{0, 0, 0}, Vec3{0, 0, 1}));

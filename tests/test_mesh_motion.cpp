@@ -238,6 +238,17 @@ TEST(MeshMotion, CaseFilePlacesTheStlWithUnitScaleRotationAndTranslation) {
   EXPECT_NEAR(norm(v[1] - Vec3{1, 2.02, 3}), 0, 1e-15);
   EXPECT_NEAR(norm(v[2] - Vec3{1 - 0.04, 2, 3}), 0, 1e-15);
   f.reject_unknown();
+  // a scale that makes the placed mesh overflow is refused naming the key
+  const CaseFile huge = CaseFile::parse(fmt::format(
+      "type = \"mesh\"\nfile = \"{}\"\nunit_scale = 1e300\n", (dir / "tri.stl").string()));
+  try {
+    WallRegistry::create("mesh", huge.root());
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("after unit_scale, scale, rotate and translate"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(MeshMotion, VtkSeriesMovesWithTheMeshAndCarriesWear) {

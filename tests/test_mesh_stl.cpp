@@ -89,6 +89,10 @@ TEST(MeshStl, MalformedFilesNameTheTriangle) {
   bad.triangles.push_back({2 + 2 + 0, 0, static_cast<std::uint32_t>(bad.vertices.size() - 1)});
   EXPECT_NE(refusal(binary_stl(bad)).find("triangle 8: non-manifold edge"), std::string::npos)
       << refusal(binary_stl(bad));
+  // finite coordinates whose edges overflow
+  bad = m;
+  bad.vertices[8] = {1e308, -1e308, 0};
+  EXPECT_NE(refusal(ascii(bad)).find("coordinates too large"), std::string::npos);
   // neither form
   EXPECT_NE(refusal("hello").find("not an STL file"), std::string::npos);
   EXPECT_EQ(refusal(good), "accepted");

@@ -158,10 +158,16 @@ const bool registered = WallRegistry::add("mesh", [](const CaseTable& t) {
       if (t.has(k)) t.fail(k, "give the motion either here or in [walls.motion], not both");
     motion = make_motion(*mt);
   }
+  std::vector<Vec3> vertices = placed(t, std::move(m.vertices));
+  try {  // the placed mesh once more: scaling must not overflow or collapse a triangle
+    validate_mesh({vertices, m.triangles});
+  } catch (const StlError& e) {
+    t.fail("file", fmt::format("after unit_scale, scale, rotate and translate: {}", e.what()));
+  }
   ArchardWear wear;
   wear.coefficient = t.number("wear_coefficient", Limits::non_negative(), 0.0);
   if (wear.coefficient > 0) wear.hardness = t.number("hardness", Limits::positive());
-  return std::make_unique<MeshWall>(MeshSurface(placed(t, std::move(m.vertices)), m.triangles),
+  return std::make_unique<MeshWall>(MeshSurface(std::move(vertices), m.triangles),
                                     std::move(motion), wear);
 });
 

@@ -151,6 +151,10 @@ void validate_mesh(const IndexedMesh& m) {
     const Vec3 &a = m.vertices[tri[0]], &b = m.vertices[tri[1]], &c = m.vertices[tri[2]];
     const double longest = std::max({norm2(b - a), norm2(c - b), norm2(a - c)});
     const double area2 = norm(cross(b - a, c - a));  // twice the area
+    if (!std::isfinite(longest) || !std::isfinite(area2))
+      throw StlError(
+          static_cast<long>(t), 0,
+          fmt::format("triangle {}: coordinates too large (its edges or area overflow)", t));
     if (!(area2 > 2e-12 * longest))
       throw StlError(static_cast<long>(t), 0,
                      fmt::format("triangle {}: zero area (corners ({}, {}, {}), ({}, {}, {}), ({}, "

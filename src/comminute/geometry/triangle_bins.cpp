@@ -8,9 +8,10 @@ namespace comminute {
 std::array<std::int64_t, 3> TriangleBins::cell_of(const Vec3& p) const {
   std::array<std::int64_t, 3> c{};
   for (int a = 0; a < 3; ++a) {
-    const double f = std::floor((p[a] - origin_[a]) / h_);
-    c[a] = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::clamp(f, -1.0, 1e15)), 0,
-                                    n_[a] - 1);
+    double f = std::floor((p[a] - origin_[a]) / h_);
+    if (!(f > 0)) f = 0;  // also NaN: a non-finite particle is reported after the step
+    if (!(f < static_cast<double>(n_[a] - 1))) f = static_cast<double>(n_[a] - 1);
+    c[a] = static_cast<std::int64_t>(f);
   }
   return c;
 }
@@ -34,7 +35,7 @@ void TriangleBins::build(const std::vector<Vec3>& v,
   h_ = std::max(mean, 1e-9 * largest);
   if (!(h_ > 0)) h_ = 1;
   const double limit = 4.0 * static_cast<double>(tris.size()) + 64;
-  for (;;) {
+  for (int grow = 0; grow < 4000; ++grow) {  // (a finite span needs far fewer)
     double cells = 1;
     for (int a = 0; a < 3; ++a) cells *= std::floor(span[a] / h_) + 1;
     if (cells <= limit) break;

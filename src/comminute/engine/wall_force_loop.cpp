@@ -95,8 +95,10 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       hits.assign(end - q, WallContact{{}, {}, 0, 0, -1});
       for (std::size_t k = q; k < end; ++k) {
         const WallContactRecord& c = candidates[k];
-        found.clear();
-        walls[c.wall]->contacts(p.x[c.particle], p.radius[c.particle], 0.0, found);
+        if (k == q || c.wall != candidates[k - 1].wall) {  // one look-up per wall (a mesh may
+          found.clear();                                   // list many features)
+          walls[c.wall]->contacts(p.x[c.particle], p.radius[c.particle], 0.0, found);
+        }
         for (const auto& f : found)  // a full-scan wall's candidate (feature < 0) takes any
           if (f.feature == c.feature || c.feature < 0) hits[k - q] = f;
       }

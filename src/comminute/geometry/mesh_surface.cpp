@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <tuple>
 #include <utility>
 
 namespace comminute {
@@ -171,26 +172,27 @@ void MeshSurface::contacts(const Vec3& x, double r, double margin,
     h.contact = {nrm, q.point, r - dist, 0, static_cast<int>(t)};
     hits.push_back(h);
   }
-  // an edge or corner is the closest feature of the surface only when every triangle around it
-  // finds its closest point there (the sphere centre is in that feature's Voronoi region)
-  auto reported = [&](std::int64_t t, Region region, std::uint32_t id) {
-    for (const Hit& h : hits)
-      if (h.contact.element == t && h.region == region && h.id == id) return true;
-    return false;
-  };
+  // Grouped by feature (then triangle): each feature once, from its lowest triangle. An edge or
+  // corner is the closest feature of the surface only when every triangle around it finds its
+  // closest point there (the sphere centre is in that feature's Voronoi region): each triangle
+  // reports a feature at most once, so that is a count.
+  std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
+    return std::tie(a.region, a.id, a.contact.element) <
+           std::tie(b.region, b.id, b.contact.element);
+  });
   const int np = static_cast<int>(n_patch_), ne = static_cast<int>(edge_vertex_.size());
   const std::size_t first = out.size();
-  for (std::size_t k = 0; k < hits.size(); ++k) {
-    const Hit& h = hits[k];
-    bool keep = true;
-    for (std::size_t j = 0; j < k && keep; ++j)  // one per feature
-      keep = !(hits[j].region == h.region && hits[j].id == h.id);
-    if (keep && !candidates && h.region == edge)
-      for (std::int64_t t : edge_triangle_[h.id]) keep = keep && (t < 0 || reported(t, edge, h.id));
-    if (keep && !candidates && h.region == corner)
-      for (std::uint32_t s = vertex_start_[h.id]; s < vertex_start_[h.id + 1] && keep; ++s)
-        keep = reported(vertex_triangle_[s], corner, h.id);
-    if (!keep) continue;
+  for (std::size_t g = 0; g < hits.size();) {
+    const Hit& h = hits[g];
+    std::size_t end = g + 1;
+    while (end < hits.size() && hits[end].region == h.region && hits[end].id == h.id) ++end;
+    const std::size_t reports = end - g;
+    g = end;
+    if (!candidates && h.region == edge && reports != (edge_triangle_[h.id][1] >= 0 ? 2u : 1u))
+      continue;
+    if (!candidates && h.region == corner &&
+        reports != vertex_start_[h.id + 1] - vertex_start_[h.id])
+      continue;
     WallContact c = h.contact;
     c.feature = h.region == face   ? static_cast<int>(h.id)
                 : h.region == edge ? np + static_cast<int>(h.id)

@@ -60,7 +60,9 @@ void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
         }
     }
     for (std::size_t b = 0; b < broken_ids_.size(); ++b) {
-      const std::size_t i = slot_of.at(broken_ids_[b]);
+      const auto found_parent = slot_of.find(broken_ids_[b]);
+      if (found_parent == slot_of.end()) continue;  // left through an outlet while it waited
+      const std::size_t i = found_parent->second;
       replace(sim, ctx, i, around[i], broken_records_[b]);
     }
     p.compact();

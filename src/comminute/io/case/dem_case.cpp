@@ -9,6 +9,7 @@
 #include "comminute/core/units.hpp"
 #include "comminute/engine/insertion.hpp"
 #include "comminute/io/case/lammps_data.hpp"
+#include "comminute/io/case/machine_case.hpp"
 #include "comminute/io/case/wall_builders.hpp"
 
 namespace comminute::io {
@@ -92,6 +93,8 @@ void read_contact(const CaseTable& root, Simulation& sim) {
   if (h != "none") sim.cohesion = CohesionRegistry::create(h, c);
 }
 
+}  // namespace
+
 Region read_region(const CaseTable& t) {
   Region g;
   const std::string shape = t.choice("shape", {"box", "cylinder"});
@@ -111,6 +114,8 @@ Region read_region(const CaseTable& t) {
   }
   return g;
 }
+
+namespace {
 
 // [insert.size]: the distribution by name; it reads its own keys.
 std::shared_ptr<const SizeDistribution> read_size(const CaseTable& t) {
@@ -219,6 +224,7 @@ DemCase build_dem_case(const CaseTable& root) {
     out.time_step->add({sp.radius, sp.material, fmt::format("insert[{}]", k), false});
   }
   check_wall_names(walls, sim);
+  add_machines(root, walls, sim);
   return out;
 }
 

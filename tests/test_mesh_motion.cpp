@@ -8,6 +8,7 @@
 #include <fmt/ranges.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <numbers>
 
@@ -163,6 +164,7 @@ TEST(MeshMotion, ElevatorPowerIsWeightTimesSpeed) {
   // 1e-6: the residual oscillation of the contact after 30 periods at e = 0.5 (about 0.5^30)
   EXPECT_NEAR(row.at(16), -m * 9.81, 1e-6 * m * 9.81);               // lift_Fz
   EXPECT_NEAR(row.at(20), m * 9.81 * 0.01, 1e-6 * m * 9.81 * 0.01);  // lift_P
+  std::printf("elevator power %.9g W, m g v = %.9g W\n", row.at(20), m * 9.81 * 0.01);
 }
 
 TEST(MeshMotion, TurntablePowerIsTorqueTimesOmegaAndSumsToTheWallWork) {
@@ -189,6 +191,7 @@ TEST(MeshMotion, TurntablePowerIsTorqueTimesOmegaAndSumsToTheWallWork) {
   ASSERT_GT(booked, 1e-7);
   // 1e-9 relative: the same sum in another order (the CSV's shortest round-trip digits are exact)
   EXPECT_NEAR(work, booked, 1e-9 * booked);
+  std::printf("turntable: sum of P dt %.12g J, ledger wall work %.12g J\n", work, booked);
 }
 
 TEST(MeshMotion, ArchardWearOfASlidingSphere) {
@@ -216,6 +219,8 @@ TEST(MeshMotion, ArchardWearOfASlidingSphere) {
   // 2 %: the tangential spring stores a little elastic slip at the stick transition, and the
   // normal force oscillates slightly about m g while sliding
   EXPECT_NEAR(worn, expect, 0.02 * expect);
+  std::printf("Archard wear: %.6g m3, analytic %.6g m3 (%+.3f %%)\n", worn, expect,
+              100 * (worn / expect - 1));
   // the wear depth drawn on the triangles is the volume over each triangle's area
   const SurfaceMesh sm = mesh->surface(0);
   EXPECT_NEAR(sm.wear_depth[0] * 0.5e-4, mesh->wear_volume()[0], 1e-30);

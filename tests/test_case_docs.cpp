@@ -14,7 +14,8 @@ TEST(CaseDocs, EveryKeyOfTheDemExamplesIsDocumented) {
   for (const char* name :
        {"/examples/settle/settle.toml", "/examples/drum/rotating_drum.toml",
         "/examples/piston/confined_compression.toml", "/examples/machines/servo_compression.toml",
-        "/examples/machines/discharge.toml", "/examples/periodic/drum_slice.toml"}) {
+        "/examples/machines/discharge.toml", "/examples/periodic/drum_slice.toml",
+        "/examples/mesh_drum/mesh_drum.toml"}) {
     CaseFile f = CaseFile::load(std::string(COMMINUTE_SOURCE_DIR) + name);
     io::build_dem_case(f.root());
     if (auto o = f.root().optional_table("output")) io::read_output_options(*o);

@@ -9,6 +9,7 @@
 #include "comminute/contact/cohesion.hpp"
 #include "comminute/contact/contact_law.hpp"
 #include "comminute/contact/rolling_resistance.hpp"
+#include "comminute/geometry/motion_model.hpp"
 #include "comminute/geometry/wall.hpp"
 #include "comminute/particles/size_distribution.hpp"
 #include "source_file.hpp"
@@ -29,6 +30,7 @@ const Family kFamilies[] = {
     {"CohesionRegistry", &CohesionRegistry::names, "docs/case-file.md"},
     {"SizeDistributionRegistry", &SizeDistributionRegistry::names, "docs/case-file.md"},
     {"WallRegistry", &WallRegistry::names, "docs/case-file.md"},
+    {"MotionRegistry", &MotionRegistry::names, "docs/case-file.md"},
 };
 
 }  // namespace

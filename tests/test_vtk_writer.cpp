@@ -27,7 +27,8 @@ class SquareWall : public Wall {
   void load(const Archive&, const std::string&) override {}
   SurfaceMesh surface(double extent) const override {
     const double h = extent / 2;
-    return {{{-h, -h, z0_}, {h, -h, z0_}, {h, h, z0_}, {-h, h, z0_}}, {{{0, 1, 2}}, {{0, 2, 3}}}};
+    return {
+        {{-h, -h, z0_}, {h, -h, z0_}, {h, h, z0_}, {-h, h, z0_}}, {{{0, 1, 2}}, {{0, 2, 3}}}, {}};
   }
 
  private:

@@ -89,6 +89,14 @@ void ContactStateStore::clear(std::size_t k) {
   for (auto& c : f64_) c.data[k] = 0.0;
 }
 
+void ContactStateStore::move(std::size_t from, std::size_t to) {
+  for (auto& c : vec3_) c.data[to] = c.data[from];
+  for (auto& c : f32_) c.data[to] = c.data[from];
+  for (auto& c : f64_) c.data[to] = c.data[from];
+  active[to] = 1;
+  clear(from);
+}
+
 namespace {
 // Column c of the new list: fresh everywhere but at to[e], which takes old from[e]. The carried
 // values are gathered first, so only they are held twice, not the whole column.

@@ -89,6 +89,9 @@ class ContactStateStore {
   void map_vectors(std::size_t k, F f) {
     for (auto& c : vec3_) c.data[k] = f(c.data[k]);
   }
+  // Contact `to` takes the slots of contact `from` (the same contact under a new key: a sphere
+  // rolling onto the next triangle of a mesh) and is active; `from` is cleared.
+  void move(std::size_t from, std::size_t to);
   // A new list of `size` contacts, all fresh, but for the carried ones: contact to[e] takes the
   // slots of old contact from[e] (transformed by each slot's rule when reversed[e]) and is active.
   void carry(const std::vector<std::uint32_t>& from, const std::vector<std::uint32_t>& to,

@@ -93,8 +93,7 @@ void PairTracker::build_wall_candidates(const ParticleStore& p, const Walls& wal
   wall_travel_.assign(walls.size(), 0.0);
   std::vector<WallContact> found;
   for (std::uint32_t w = 0; w < walls.size(); ++w) {
-    wall_full_scan_[w] =
-        walls[w]->surface_moves() && norm2(walls[w]->kinematics.angular_velocity) > 0;
+    wall_full_scan_[w] = walls[w]->full_scan();
     for (std::uint32_t i = 0; i < p.owned(); ++i) {  // ghosts: their owners meet the walls
       const std::size_t from = fresh.size();
       add_wall_candidates(p, walls, i, w, p.x[i], p.radius[i], skin, found, fresh);

@@ -50,7 +50,7 @@ void Simulation::step() {
   forces_cleared_ = true;
   for (std::size_t k = 0; k < walls.size(); ++k) {
     walls[k]->advance(dt);
-    tracker_.wall_moved(k, norm(walls[k]->kinematics.velocity) * dt);
+    tracker_.wall_moved(k, walls[k]->travel(dt));
   }
   time += dt;
   for (auto& m : modules) m->pre_force(*this);

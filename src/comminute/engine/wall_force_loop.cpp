@@ -26,6 +26,12 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
     EnergyTally energy;
     std::vector<Vec3> force, torque;
     std::vector<WallContactRecord> touching;
+    struct Wear {
+      std::uint32_t wall;
+      int element;
+      double fn, slip;  // N, m
+    };
+    std::vector<Wear> wear;
   };
   std::vector<WallTally> part(static_cast<std::size_t>(nt));
   const Slots& slots = state.slots();
@@ -35,25 +41,20 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
     WallTally& mine = part[t];
     mine.force.assign(walls.size(), Vec3{});
     mine.torque.assign(walls.size(), Vec3{});
-    std::vector<WallContact> found;
-    for (std::size_t q = begin[t]; q < begin[t + 1]; ++q) {
+    // the force of candidate q touching as `hit` (not touching: its state is cleared)
+    auto force = [&](std::size_t q, const WallContact& hit) {
       const WallContactRecord& c = candidates[q];
       const std::uint32_t i = c.particle;
-      const Wall& w = *walls[c.wall];
-      found.clear();
-      w.contacts(p.x[i], p.radius[i], 0.0, found);
-      const WallContact* hit = nullptr;  // a full-scan wall's candidate (feature < 0) takes any
-      for (const auto& f : found)
-        if (f.feature == c.feature || c.feature < 0) hit = &f;
-      if (hit == nullptr || hit->overlap <= 0) {
+      Wall& w = *walls[c.wall];
+      if (hit.overlap <= 0) {
         if (state.active[q]) state.clear(q);
-        continue;
+        return;
       }
       state.active[q] = 1;
-      const Vec3 nrm = hit->normal;
-      const double overlap = hit->overlap;
+      const Vec3 nrm = hit.normal;
+      const double overlap = hit.overlap;
       const double ri = p.radius[i] - overlap;
-      const Vec3 vwall = w.kinematics.velocity_at(hit->point);
+      const Vec3 vwall = w.kinematics.velocity_at(hit.point);
       const Vec3 vrel = p.v[i] - cross(p.w[i], ri * nrm) - vwall;
       const double vn = dot(vrel, nrm);
       ContactKinematics ck;
@@ -73,13 +74,47 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       p.f[i] += fc;
       p.t[i] += out.rolling_torque - ri * cross(nrm, out.tangential_force);
       mine.force[c.wall] -= fc;
-      mine.torque[c.wall] -= cross(hit->point - w.kinematics.center, fc);
+      mine.torque[c.wall] -= cross(hit.point - w.kinematics.center, fc);
       mine.energy.add(out);
       mine.energy.wall_work += dot(fc, vwall) * dt;  // power of the wall's force on the particle
+      if (w.tracks_wear() && hit.element >= 0)
+        mine.wear.push_back(
+            {c.wall, hit.element, out.normal_force, norm(ck.tangential_velocity) * dt});
       WallContactRecord rec = c;
-      rec.feature = hit->feature;
+      rec.feature = hit.feature;
       rec.candidate = static_cast<std::uint32_t>(q);
       mine.touching.push_back(rec);
+    };
+    std::vector<WallContact> found, hits;
+    std::size_t q = begin[t];
+    while (q < begin[t + 1]) {
+      // the candidates of one particle, [q, end): all are looked up first, so that a contact
+      // passing to an adjacent feature of the same wall can take over the old one's history
+      std::size_t end = q + 1;
+      while (end < begin[t + 1] && candidates[end].particle == candidates[q].particle) ++end;
+      hits.assign(end - q, WallContact{{}, {}, 0, 0, -1});
+      for (std::size_t k = q; k < end; ++k) {
+        const WallContactRecord& c = candidates[k];
+        if (k == q || c.wall != candidates[k - 1].wall) {  // one look-up per wall (a mesh may
+          found.clear();                                   // list many features)
+          walls[c.wall]->contacts(p.x[c.particle], p.radius[c.particle], 0.0, found);
+        }
+        for (const auto& f : found)  // a full-scan wall's candidate (feature < 0) takes any
+          if (f.feature == c.feature || c.feature < 0) hits[k - q] = f;
+      }
+      for (std::size_t k = q; k < end; ++k) {
+        if (hits[k - q].overlap <= 0 || state.active[k]) continue;
+        const Wall& w = *walls[candidates[k].wall];
+        for (std::size_t j = q; j < end; ++j)
+          if (state.active[j] && hits[j - q].overlap <= 0 &&
+              candidates[j].wall == candidates[k].wall &&
+              w.continues(candidates[j].feature, hits[k - q].feature)) {
+            state.move(j, k);
+            break;
+          }
+      }
+      for (std::size_t k = q; k < end; ++k) force(k, hits[k - q]);
+      q = end;
     }
   }
   touching.clear();
@@ -88,6 +123,7 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       walls[k]->force += mine.force[k];
       walls[k]->torque += mine.torque[k];
     }
+    for (const auto& e : mine.wear) walls[e.wall]->wear(e.element, e.fn, e.slip);
     mine.energy.book(ledger, elastic);
     touching.insert(touching.end(), mine.touching.begin(), mine.touching.end());
   }

@@ -1,7 +1,10 @@
 #pragma once
 // The particle–wall force loop over the candidates of the pair tracker. Candidates are sorted by
 // particle, so splitting them at particle boundaries gives each thread its own particles; wall
-// forces and tallies are summed per thread and combined in thread order (reproducible).
+// forces and tallies are summed per thread and combined in thread order (reproducible). A
+// contact that moves to an adjacent feature of the same wall in one step (a sphere rolling from one
+// triangle of a mesh onto the next: Wall::continues) keeps its history (tangential spring), and
+// sliding on a wall that tracks wear is reported to it after the loop, in thread order.
 #include <memory>
 #include <vector>
 

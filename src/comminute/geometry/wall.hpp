@@ -1,8 +1,8 @@
 #pragma once
 // Walls behind one interface: infinite plane, box, finite cylinder (inside or outside); triangle
-// meshes later implement the same interface. A wall reports the contact features a sphere touches
-// (a box corner touches up to three faces), moves by its Kinematics, and accumulates the force and
-// torque the particles exert on it (outputs). Each wall type is a plug-in: its factory in
+// meshes (MeshWall) implement the same interface. A wall reports the contact features a sphere
+// touches (a box corner touches up to three faces), moves by its Kinematics, and accumulates the
+// force and torque the particles exert on it (outputs). Each wall type is a plug-in: its factory in
 // WallRegistry takes the view of its [[walls]] table and reads the keys of its shape; the keys
 // common to all walls (name, material, motion) are read by the case builder.
 #include <array>
@@ -33,12 +33,14 @@ struct WallContact {
   Vec3 point;          // contact point on the wall surface, m
   double overlap = 0;  // m (> 0 when touching; candidates within the skin may be <= 0)
   int feature = 0;     // which face/edge/triangle (history key, stable over time)
+  int element = -1;    // the triangle of a mesh wall that produced it (wear), else -1
 };
 
 // A triangle surface for visualisation (ParaView) of any wall.
 struct SurfaceMesh {
   std::vector<Vec3> vertices;
   std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<double> wear_depth;  // m, per triangle (empty: the wall tracks no wear)
 };
 
 class Wall {
@@ -55,6 +57,21 @@ class Wall {
   // True when the wall's surface moves (so particles near it must be re-found): translation, or
   // rotation that changes the shape's position (a cylinder turning about its own axis does not).
   virtual bool surface_moves() const { return norm2(kinematics.velocity) > 0; }
+  // Distance (m) the surface may have moved over dt with the current kinematics: the neighbour
+  // lists are rebuilt once it adds up to half the skin.
+  virtual double travel(double dt) const { return norm(kinematics.velocity) * dt; }
+  // True when a rotating wall's candidates cannot be kept by travel() and every particle must be
+  // checked every step (analytic walls turning about a point off their axis).
+  virtual bool full_scan() const {
+    return surface_moves() && norm2(kinematics.angular_velocity) > 0;
+  }
+  // True when a contact passing from feature `from` to feature `to` (a sphere rolling from one
+  // triangle to the next) is the same contact, whose history carries over. Analytic walls: never.
+  virtual bool continues(int /*from*/, int /*to*/) const { return false; }
+  // Sliding wear: a contact on `element` (WallContact::element) pressed with normal force fn (N)
+  // slid a distance s (m) in this step. Walls that do not track wear ignore it.
+  virtual bool tracks_wear() const { return false; }
+  virtual void wear(int /*element*/, double /*fn*/, double /*s*/) {}
   // False for a wall that can translate but not rotate (the case builder refuses an
   // angular_velocity for it).
   virtual bool can_rotate() const { return true; }

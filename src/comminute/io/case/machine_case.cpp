@@ -92,7 +92,7 @@ void add_wall_controls(const std::vector<CaseTable>& walls, Simulation& sim) {
   for (std::size_t k = 0; k < walls.size() && k < sim.walls.size(); ++k) {
     const auto c = walls[k].optional_table("control");
     if (!c) continue;
-    for (const char* key : {"velocity", "angular_velocity"})
+    for (const char* key : {"velocity", "angular_velocity", "motion"})
       if (walls[k].has(key))
         walls[k].fail(key,
                       "a wall with a 'control' table moves as its control says: remove "

@@ -45,6 +45,7 @@ std::vector<Column> TimeSeriesWriter::columns(const std::vector<std::string>& wa
   for (const auto& w : wall_names) {
     for (const char* a : {"_Fx", "_Fy", "_Fz"}) c.push_back({w + a, "N"});
     for (const char* a : {"_Tx", "_Ty", "_Tz"}) c.push_back({w + a, "N m"});
+    c.push_back({w + "_P", "W"});
   }
   return c;
 }
@@ -71,9 +72,14 @@ void TimeSeriesWriter::append(const Observables& o,
                            l.removed,
                            l.wall_work,
                            balance};
-  for (const auto& w : walls)
+  for (const auto& w : walls) {
     for (double v : {w->force.x, w->force.y, w->force.z, w->torque.x, w->torque.y, w->torque.z})
       row.emplace_back(v);
+    // the power the wall delivers to the particles: -(F . v + T . omega), F and T being what the
+    // particles exert on it (T about the rotation centre, whose velocity is v)
+    const Kinematics& k = w->kinematics;
+    row.emplace_back(-(dot(w->force, k.velocity) + dot(w->torque, k.angular_velocity)));
+  }
   series_.append(row);
 }
 

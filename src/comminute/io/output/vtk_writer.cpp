@@ -46,9 +46,14 @@ VtkPolyData wall_polydata(const std::vector<std::unique_ptr<Wall>>& walls, doubl
   std::vector<std::int32_t> wall_index;
   std::vector<Vec3> cell_force, cell_torque, force, torque;
   std::vector<std::string> names;
+  std::vector<double> wear;  // per cell, m (written when a wall tracks wear per triangle)
+  bool any_wear = false;
   for (std::size_t k = 0; k < walls.size(); ++k) {
     const Wall& w = *walls[k];
     const SurfaceMesh m = w.surface(extent);
+    any_wear = any_wear || !m.wear_depth.empty();
+    for (std::size_t t = 0; t < m.triangles.size(); ++t)
+      wear.push_back(t < m.wear_depth.size() ? m.wear_depth[t] : 0.0);
     const auto base = static_cast<std::uint32_t>(pd.points.size());
     pd.points.insert(pd.points.end(), m.vertices.begin(), m.vertices.end());
     for (const auto& tri : m.triangles) {
@@ -64,6 +69,7 @@ VtkPolyData wall_polydata(const std::vector<std::unique_ptr<Wall>>& walls, doubl
   pd.cell_data.push_back(vtk_array("wall_index", std::span<const std::int32_t>(wall_index)));
   pd.cell_data.push_back(vtk_array("force", std::span<const Vec3>(cell_force)));
   pd.cell_data.push_back(vtk_array("torque", std::span<const Vec3>(cell_torque)));
+  if (any_wear) pd.cell_data.push_back(vtk_array("wear_depth", std::span<const double>(wear)));
   const double t[] = {time};
   pd.field_data.push_back(vtk_array("TimeValue", std::span<const double>(t)));
   pd.field_data.push_back(vtk_string_array("wall_name", names));

@@ -6,7 +6,8 @@
 // Particle point data: id, radius [m], diameter [m], mass [kg], velocity [m/s],
 // angular_velocity [rad/s], force [N], material [-], then the store's named fields (all of them,
 // or the selected ones). Wall files hold every wall's triangulated surface with cell data
-// wall_index, force [N], torque [N m] (of the wall the cell belongs to) and field data
+// wall_index, force [N], torque [N m] (of the wall the cell belongs to), wear_depth [m] (Archard
+// wear of mesh triangles; written when a mesh wall is present, 0 on other walls) and field data
 // wall_name, wall_force, wall_torque (one tuple per wall) and TimeValue [s].
 #include <cstdint>
 #include <filesystem>

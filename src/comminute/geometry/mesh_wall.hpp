@@ -1,0 +1,61 @@
+#pragma once
+// A wall made of a triangle mesh (STL), moving rigidly by a MotionModel or the constant
+// kinematics of the [[walls]] table. The mesh stays in its body frame (contact queries transform
+// the sphere centre into it, so a moving mesh is never re-binned); the pose is an orientation
+// matrix and a translation. Contacts follow MeshSurface (face, edge and corner regions, one
+// contact per touched feature); a contact passing to an adjacent feature keeps its history
+// (continues()). Archard wear is summed per triangle.
+#include <memory>
+#include <vector>
+
+#include "comminute/geometry/mesh_surface.hpp"
+#include "comminute/geometry/motion_model.hpp"
+#include "comminute/geometry/wall.hpp"
+
+namespace comminute {
+
+struct ArchardWear {
+  double coefficient = 0;  // k, dimensionless (0: no wear)
+  double hardness = 1;     // H, Pa
+};
+
+class MeshWall : public Wall {
+ public:
+  // `motion` may be null: the wall then keeps the constant kinematics set on it.
+  MeshWall(MeshSurface surface, std::unique_ptr<MotionModel> motion, ArchardWear wear);
+  std::string type() const override { return "mesh"; }
+  int contacts(const Vec3& x, double r, double margin,
+               std::vector<WallContact>& out) const override;
+  void advance(double dt) override;
+  SurfaceMesh surface(double extent) const override;
+  bool surface_moves() const override { return kinematics.moving() || motion_ != nullptr; }
+  double travel(double dt) const override;
+  bool full_scan() const override { return false; }
+  bool continues(int from, int to) const override { return mesh_.adjacent(from, to); }
+  bool tracks_wear() const override { return archard_.coefficient > 0; }
+  void wear(int element, double fn, double s) override;
+  void save(Archive& a, const std::string& prefix) const override;
+  void load(const Archive& a, const std::string& prefix) override;
+
+  const MeshSurface& mesh() const { return mesh_; }
+  // Archard wear volume per triangle (m3).
+  const std::vector<double>& wear_volume() const { return wear_volume_; }
+  Vec3 to_world(const Vec3& body) const;
+  std::size_t bytes() const;
+
+ private:
+  Vec3 to_body(const Vec3& world) const;
+  Vec3 rotate_to_world(const Vec3& body) const;
+
+  MeshSurface mesh_;
+  std::unique_ptr<MotionModel> motion_;
+  ArchardWear archard_;
+  std::vector<double> wear_volume_;
+  std::array<Vec3, 3> axes_{Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};  // columns of R
+  Vec3 offset_;                                                            // T: world = R body + T
+  double motion_time_ = 0;                                                 // s
+  mutable Vec3 reach_center_;  // body-frame rotation centre of the cached reach
+  mutable double reach_ = -1;  // m, largest vertex distance from it
+};
+
+}  // namespace comminute

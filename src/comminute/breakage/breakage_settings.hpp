@@ -14,6 +14,12 @@
 
 namespace comminute::breakage {
 
+// The force of a stressing event (docs/breakage.md, "Stressing events").
+enum class ForceMeasure {
+  largest_contact,  // the largest single elastic normal contact force (Cleary & Sinnott 2015)
+  contact_sum       // the sum of the elastic normal contact forces on the particle
+};
+
 // Breakage settings of one material.
 struct MaterialBreakage {
   std::unique_ptr<BreakageCriterion> criterion;
@@ -24,6 +30,7 @@ struct MaterialBreakage {
   double min_fragment_ratio = 0.05;  // fragments below this fraction of the parent diameter: fines
   FinesRule fines = FinesRule::particles;
   double release_fraction = 0;  // eta: fraction of the absorbed energy given as radial speed
+  ForceMeasure force_measure = ForceMeasure::largest_contact;  // the event's peak force
 };
 
 // Settings of material k at [k], or empty (material k never breaks).
@@ -39,7 +46,7 @@ struct BreakageOptions {
   int replacement_interval = 1;  // replace broken parents every this many steps (batched; each
                                  // replacement makes the engine rebuild its neighbour list)
   bool log_all_events = false;   // also log events that did not break (probability plots)
-  double output_interval = 0;    // s between ledger rows / table rewrites (0: every 1000 steps)
+  double output_interval = 0;  // s between ledger rows / table rewrites (0: every 1000 steps)
 };
 
 // Indices of the per-particle fields every collaborator reads.

@@ -50,17 +50,22 @@ void StressingEvents::gather_loads(const Simulation& sim) {
         const std::size_t a = p.material[i], b = p.material[j];
         acc[i].work += share_[a * n_materials_ + b] * loading.loading_work(h);
         acc[j].work += share_[b * n_materials_ + a] * loading.loading_work(h);
-        acc[i].force += loading.normal_force(h);
-        acc[j].force += loading.normal_force(h);
+        const double f = loading.normal_force(h);
+        acc[i].force += f;
+        acc[j].force += f;
+        acc[i].largest = std::max(acc[i].largest, f);
+        acc[j].largest = std::max(acc[j].largest, f);
       },
       [](ContactLoad x, const ContactLoad& y) {
-        return ContactLoad{x.work + y.work, x.force + y.force};
+        return ContactLoad{x.work + y.work, x.force + y.force, std::max(x.largest, y.largest)};
       });
   for (const auto& c : sim.wall_contacts()) {
     const std::size_t a = p.material[c.particle], b = sim.walls[c.wall]->material;
     const StateRef h = sim.wall_state().at(c.candidate);
     contact_load_[c.particle].work += share_[a * n_materials_ + b] * loading.loading_work(h);
-    contact_load_[c.particle].force += loading.normal_force(h);
+    const double f = loading.normal_force(h);
+    contact_load_[c.particle].force += f;
+    contact_load_[c.particle].largest = std::max(contact_load_[c.particle].largest, f);
   }
 }
 
@@ -130,7 +135,7 @@ void StressingEvents::assess(Simulation& sim, const BreakageMaterials& materials
     } else {
       quiet[i] += 1;
     }
-    force[i] = std::max(force[i], contact_load_[i].force);
+    force[i] = std::max(force[i], contact_load_[i].of(mat->force_measure));
     const StressingEvent ev{energy[i], force[i]};
     if (crit.breaks(p, i, d, ev)) {
       EventRecord r = record();

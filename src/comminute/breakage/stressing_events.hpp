@@ -4,9 +4,10 @@
 // force up to the contact's largest overlap) and e_c = 1/(1 + k_p/k_o) the particle's share. An
 // event starts when S rises above the baseline left by the previous event (0 for a particle
 // without contacts); its energy is the running maximum of S - baseline and its force the running
-// maximum of the summed elastic normal forces. It ends when the particle loses all contacts, or
-// when S has not risen for `event_end_steps` steps; then, if it did not break, the criterion's
-// survive() applies (damage), and the baseline becomes the current S.
+// maximum of the largest single elastic normal contact force (or of their sum, by the material's
+// force_measure). It ends when the particle loses all contacts, or when S has not risen for
+// `event_end_steps` steps; then, if it did not break, the criterion's survive() applies (damage),
+// and the baseline becomes the current S.
 // Owns the per-particle event fields (breakage.in_event, event_energy, event_force, baseline,
 // quiet_steps) and the energy shares per material pair.
 #include <cstddef>
@@ -47,8 +48,10 @@ class StressingEvents {
   std::size_t n_materials_ = 0;
   std::size_t f_in_event_ = 0, f_energy_ = 0, f_force_ = 0, f_baseline_ = 0, f_quiet_ = 0;
   struct ContactLoad {
-    double work = 0;   // J, share of the contacts' loading work
-    double force = 0;  // N, sum of the elastic normal contact forces
+    double work = 0;     // J, share of the contacts' loading work
+    double force = 0;    // N, sum of the elastic normal contact forces
+    double largest = 0;  // N, largest single elastic normal contact force
+    double of(ForceMeasure m) const { return m == ForceMeasure::contact_sum ? force : largest; }
   };
   std::vector<ContactLoad> contact_load_;  // per slot, scratch
 };

@@ -23,6 +23,10 @@ breakage::MaterialBreakage read_material(const CaseTable& b, const Material& mat
                 ? breakage::FinesRule::mass
                 : breakage::FinesRule::particles;
   m.release_fraction = b.number("release_fraction", Limits::unit_interval(), 0.0);
+  m.force_measure = b.choice("force_measure", {"largest_contact", "contact_sum"},
+                             "largest_contact") == "largest_contact"
+                        ? breakage::ForceMeasure::largest_contact
+                        : breakage::ForceMeasure::contact_sum;
   if (m.min_fragment_size <= 0 && m.min_breakable_size <= 0)
     b.fail("min_fragment_size",
            "set min_fragment_size or min_breakable_size (m) > 0: otherwise fragments shrink "

@@ -1,9 +1,11 @@
 // Breakage as a laboratory study needs it (issue 8): the peak force of a particle between two
-// platens is the platen force (point 4).
+// platens is the platen force (point 4), a limit on the generations that break (point 7), and the
+// outputs that let a user rebuild the progeny of any set of events (point 10).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "breakage_engine_fixture.hpp"
 #include "comminute/breakage/criteria/peak_force.hpp"
@@ -79,3 +81,57 @@ TEST(BreakageStudy, PlatenTestReportsThePlatenForce) {
   EXPECT_NEAR(sum.platen_force / sum.critical, 0.5, 0.005);
 }
 
+namespace {
+
+// The weak-particle gas of the engine tests (box_gas: 216 spheres of 3 mm at up to 3 m/s per
+// axis in a closed box), where every collision breaks and fragments break again, run for
+// `steps` steps with breakage options `opt`.
+struct GasResult {
+  std::map<std::uint32_t, std::uint64_t> breakages_by_generation;
+  std::uint32_t max_particle_generation = 0;  // among the particles present at the end
+};
+
+GasResult run_gas(const breakage::BreakageOptions& opt, int steps) {
+  auto sim = box_gas(0.3, 29);
+  std::vector<std::optional<breakage::MaterialBreakage>> mats;
+  mats.emplace_back(weak_material(0.02, 0.3, 0.0005, 0.3, breakage::FinesRule::mass, 0.2));
+  auto mod = std::make_unique<breakage::BreakageModule>(std::move(mats), opt);
+  const breakage::BreakageModule* module = mod.get();
+  sim->modules.push_back(std::move(mod));
+  sim->dt = 0.2 * 3.1416 * 0.00018 * std::sqrt(2500 / (5e7 / 2.6)) / (0.1631 * 0.3 + 0.8766);
+  sim->setup();
+  sim->run(static_cast<std::uint64_t>(steps));
+  GasResult out;
+  for (const auto& r : module->log())
+    if (r.broken) ++out.breakages_by_generation[r.generation];
+  const auto& g = sim->particles.field(sim->particles.field_index("breakage.generation"));
+  for (std::size_t i = 0; i < sim->particles.size(); ++i)
+    out.max_particle_generation =
+        std::max(out.max_particle_generation, static_cast<std::uint32_t>(g[i]));
+  return out;
+}
+
+}  // namespace
+
+// Issue 8 point 7: max_generations = 2 lets the initial particles and their fragments break but
+// not the fragments' fragments (generation 2), which do exist and, without the limit, break in the
+// same run. Exact counts: the limit is a rule, not a statistic.
+TEST(BreakageStudy, MaxGenerationsStopsBreakageAtTheLimit) {
+  GasResult unlimited = run_gas(breakage::BreakageOptions{}, 250);
+  ASSERT_GT(unlimited.breakages_by_generation[2], 0u);  // the limit has something to stop
+  RecordProperty("unlimited_generation_2_breakages",
+                 std::to_string(unlimited.breakages_by_generation[2]));
+  breakage::BreakageOptions two;
+  two.max_generations = 2;
+  GasResult limited = run_gas(two, 250);
+  EXPECT_GT(limited.breakages_by_generation[0], 0u);
+  EXPECT_GT(limited.breakages_by_generation[1], 0u);
+  EXPECT_GE(limited.max_particle_generation, 2u);  // generation-2 particles are there
+  for (const auto& [g, n] : limited.breakages_by_generation)
+    EXPECT_LT(g, 2u) << n << " breakages of generation " << g;
+  breakage::BreakageOptions one;
+  one.max_generations = 1;
+  GasResult first_only = run_gas(one, 250);
+  ASSERT_EQ(first_only.breakages_by_generation.size(), 1u);
+  EXPECT_GT(first_only.breakages_by_generation[0], 0u);
+}

@@ -3,6 +3,8 @@
 // replacement): per-material breakage settings, the module's options and the per-particle fields
 // the module registers for all of them.
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -46,6 +48,8 @@ struct BreakageOptions {
   int replacement_interval = 1;  // replace broken parents every this many steps (batched; each
                                  // replacement makes the engine rebuild its neighbour list)
   bool log_all_events = false;   // also log events that did not break (probability plots)
+  // Only particles of a generation below this break (1: only the initial set); default unlimited.
+  std::uint32_t max_generations = std::numeric_limits<std::uint32_t>::max();
   double output_interval = 0;  // s between ledger rows / table rewrites (0: every 1000 steps)
 };
 

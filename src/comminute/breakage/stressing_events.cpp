@@ -87,7 +87,7 @@ void StressingEvents::assess(Simulation& sim, const BreakageMaterials& materials
     // FragmentGrowth::grow).
     const double d = 2 * std::max(p.radius[i], target[i]);
     const double s = contact_load_[i].work / p.mass[i];  // J/kg
-    if (d < mat->min_breakable_size) {
+    if (d < mat->min_breakable_size || p.field(f.generation)[i] >= max_generations_) {
       baseline[i] = s;
       continue;
     }

@@ -7,7 +7,8 @@
 // maximum of the largest single elastic normal contact force (or of their sum, by the material's
 // force_measure). It ends when the particle loses all contacts, or when S has not risen for
 // `event_end_steps` steps; then, if it did not break, the criterion's survive() applies (damage),
-// and the baseline becomes the current S.
+// and the baseline becomes the current S. Particles of generation max_generations or later are
+// not assessed.
 // Owns the per-particle event fields (breakage.in_event, event_energy, event_force, baseline,
 // quiet_steps) and the energy shares per material pair.
 #include <cstddef>
@@ -26,7 +27,8 @@ class StressingEvents {
   // A particle (slot) broke in the event `record`; it is flagged unbreakable until replaced.
   using BrokeFn = std::function<void(std::size_t slot, const EventRecord& record)>;
 
-  StressingEvents(int end_steps, bool log_all) : end_steps_(end_steps), log_all_(log_all) {}
+  StressingEvents(int end_steps, bool log_all, std::uint32_t max_generations)
+      : end_steps_(end_steps), log_all_(log_all), max_generations_(max_generations) {}
 
   void register_fields(ParticleStore& p);
   // Energy shares e of every material pair (after setup or a checkpoint).
@@ -44,7 +46,8 @@ class StressingEvents {
  private:
   int end_steps_;
   bool log_all_;
-  std::vector<double> share_;  // e for material a against b: share_[a * n + b]
+  std::uint32_t max_generations_;  // particles of this generation or later are not assessed
+  std::vector<double> share_;      // e for material a against b: share_[a * n + b]
   std::size_t n_materials_ = 0;
   std::size_t f_in_event_ = 0, f_energy_ = 0, f_force_ = 0, f_baseline_ = 0, f_quiet_ = 0;
   struct ContactLoad {

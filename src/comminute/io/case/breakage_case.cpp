@@ -71,6 +71,8 @@ breakage::BreakageModule* add_breakage(const CaseTable& root, DemCase& dem) {
         g->number("growth_overlap_ratio", Limits{0.0, 0.5, false, false}, 0.001);
     opt.event_end_steps = static_cast<int>(g->integer("event_end_steps", 1, 1000000, 20));
     opt.log_all_events = g->boolean("log_all_events", false);
+    if (g->has("max_generations"))
+      opt.max_generations = static_cast<std::uint32_t>(g->integer("max_generations", 1, 1000000));
     opt.replacement_interval = static_cast<int>(g->integer("replacement_interval", 1, 1000, 1));
     opt.output_interval = g->number("output_interval", Limits::non_negative(), 0.0);
     psd_interval = g->number("size_distribution_interval", Limits::non_negative(), 0.0);

@@ -32,6 +32,7 @@ std::vector<Table> BreakageSeries::tables(const Simulation& sim) const {
   std::vector<Table> t;
   t.push_back(model_curves(sim));
   t.push_back(events());
+  t.push_back(fragments());
   t.push_back(ledger());
   return t;
 }
@@ -60,6 +61,19 @@ Table BreakageSeries::events() const {
                m ? std::string(m->criterion->strength_unit()) : std::string(), r.damage_before,
                r.broken, r.fragments, r.fines_particles, r.fines_mass, r.t10});
   }
+  return t;
+}
+
+Table BreakageSeries::fragments() const {
+  Table t("breakage_fragments", {{"time", "s"},
+                                 {"parent_id", "-"},
+                                 {"fragment_id", "-"},
+                                 {"generation", "-"},
+                                 {"diameter", "m"},
+                                 {"mass", "kg"},
+                                 {"fines", "-"}});
+  for (const auto& f : module_.fragment_log())
+    t.add_row({f.time, f.parent_id, f.fragment_id, f.generation, f.diameter, f.mass, f.fines});
   return t;
 }
 

@@ -57,6 +57,7 @@ struct BreakageOptions {
 struct BreakageFields {
   std::size_t initialized = 0;  // 1 once strength is drawn
   std::size_t generation = 0;   // 0 for particles of the initial set
+  std::size_t parent_id = 0;    // id of the particle a fragment came from (0: initial set)
   std::size_t target = 0;       // m, final radius while growing (0 otherwise)
 };
 

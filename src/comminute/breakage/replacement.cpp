@@ -142,11 +142,14 @@ void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t paren
     init.flags = f.fines ? pflag::unbreakable : 0;
     const bool growing = placed[k].r < radii[k];
     if (growing) init.flags |= pflag::growing;
-    fragments_added_.push_back({p.add_with_mass(init, f.mass), radii[k]});
+    const std::uint64_t id = p.add_with_mass(init, f.mass);
+    fragments_added_.push_back({id, radii[k]});
+    ctx.log.add_fragment({sim.time, p.id[parent], id, f.diameter, f.mass, generation, f.fines});
     const std::size_t s = p.size() - 1;
     p.inertia[s] = inertia[k];  // of the full-size sphere from the start
     for (std::size_t q = 0; q < parent_fields.size(); ++q) p.field(q)[s] = parent_fields[q];
     p.field(ctx.fields.generation)[s] = generation;
+    p.field(ctx.fields.parent_id)[s] = static_cast<double>(p.id[parent]);
     p.field(ctx.fields.target)[s] = growing ? radii[k] : 0.0;
     ctx.born(s);  // every fragment draws its own strength for its size
     if (growing) ctx.growth.started();

@@ -45,6 +45,7 @@ Table BreakageSeries::events() const {
                               {"diameter", "m"},
                               {"mass", "kg"},
                               {"specific_energy", "J/kg"},
+                              {"stressing_energy", "J/kg"},
                               {"peak_force", "N"},
                               {"strength", "J/kg or N"},
                               {"strength_unit", "-"},
@@ -57,7 +58,7 @@ Table BreakageSeries::events() const {
   for (const auto& r : module_.log()) {
     const MaterialBreakage* m = module_.material(r.material);
     t.add_row({r.time, r.parent_id, r.material, r.generation, r.diameter, r.mass, r.specific_energy,
-               r.peak_force, r.strength,
+               r.stressing_energy, r.peak_force, r.strength,
                m ? std::string(m->criterion->strength_unit()) : std::string(), r.damage_before,
                r.broken, r.fragments, r.fines_particles, r.fines_mass, r.t10});
   }

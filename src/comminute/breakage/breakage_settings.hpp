@@ -22,6 +22,12 @@ enum class ForceMeasure {
   contact_sum       // the sum of the elastic normal contact forces on the particle
 };
 
+// The specific energy the progeny (t10) is sized at (docs/breakage.md, "Stressing energy").
+enum class SizingEnergy {
+  stressing,   // the event's stressing energy: absorbed work plus the approach energy still due
+  at_fracture  // the energy absorbed up to the instant of fracture (the rule before issue 8)
+};
+
 // Breakage settings of one material.
 struct MaterialBreakage {
   std::unique_ptr<BreakageCriterion> criterion;
@@ -33,6 +39,7 @@ struct MaterialBreakage {
   FinesRule fines = FinesRule::particles;
   double release_fraction = 0;  // eta: fraction of the absorbed energy given as radial speed
   ForceMeasure force_measure = ForceMeasure::largest_contact;  // the event's peak force
+  SizingEnergy sizing_energy = SizingEnergy::stressing;        // E of the t10 relation
 };
 
 // Settings of material k at [k], or empty (material k never breaks).

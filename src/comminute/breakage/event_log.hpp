@@ -18,7 +18,8 @@ struct EventRecord {
   std::uint32_t generation = 0;  // 0 for particles of the initial set
   double diameter = 0;           // m
   double mass = 0;               // kg, of the parent
-  double specific_energy = 0;    // J/kg absorbed in the event
+  double specific_energy = 0;    // J/kg absorbed in the event (up to fracture when broken)
+  double stressing_energy = 0;   // J/kg, the event's stressing energy (>= specific_energy)
   double peak_force = 0;         // N
   double strength = 0;           // J/kg (energy criteria) or N (force criteria) before the event
   double damage_before = 0;      // accumulated damage before the event
@@ -29,7 +30,7 @@ struct EventRecord {
   double fines_mass = 0;       // kg booked as mass
   double t10 = 0;              // %
 };
-static_assert(sizeof(EventRecord) == 13 * 8, "EventRecord must have no padding (checkpoints)");
+static_assert(sizeof(EventRecord) == 14 * 8, "EventRecord must have no padding (checkpoints)");
 
 // One fragment of a breakage (SI units): with the event's fines_mass, the fragments of a parent
 // give its progeny size distribution exactly (their masses and the fines add up to the parent's).

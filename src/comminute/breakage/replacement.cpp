@@ -88,9 +88,12 @@ void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t paren
   // Progeny sizes (docs/models.md eq. P1-P4).
   // E50b: the median fracture energy of the particles that break at this stressing energy, or
   // the class median (progeny key e50b; docs/models.md eq. P1b)
-  double e50b = mat.criterion->t10_median_energy(d, rec.specific_energy, mat.progeny->e50b_rule());
+  // E: the event's stressing energy, or the energy absorbed up to fracture (key sizing_energy)
+  const double e =
+      mat.sizing_energy == SizingEnergy::stressing ? rec.stressing_energy : rec.specific_energy;
+  double e50b = mat.criterion->t10_median_energy(d, e, mat.progeny->e50b_rule());
   if (e50b <= 0) e50b = mat.reference_energy;
-  rec.t10 = mat.progeny->t10(rec.specific_energy, e50b);
+  rec.t10 = mat.progeny->t10(e, e50b);
   const ProgenyDistribution dist = mat.progeny->distribution(d, rec.t10);
   const double min_size = std::max(mat.min_fragment_size, mat.min_fragment_ratio * d);
   const Progeny progeny = draw_progeny(dist, mass, density, min_size, mat.fines, ctx.strength_rng);

@@ -9,8 +9,13 @@
 // `event_end_steps` steps; then, if it did not break, the criterion's survive() applies (damage),
 // and the baseline becomes the current S. Particles of generation max_generations or later are
 // not assessed.
+// The event's stressing energy (J/kg) is the running maximum of S - baseline + K, K = sum over the
+// touching contacts of e_c (1/2) mu_c u_c^2 / m: the particle's share of the normal relative
+// kinetic energy of the contacts still approaching (u_c > 0 the approach speed, mu_c the reduced
+// mass; m for a wall). For a single impact it is e E from the first step of contact, E the
+// impact energy per unit mass, before the dashpot takes any; for a slow compression it is S.
 // Owns the per-particle event fields (breakage.in_event, event_energy, event_force, baseline,
-// quiet_steps) and the energy shares per material pair.
+// quiet_steps, stressing_energy) and the energy shares per material pair.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -49,11 +54,13 @@ class StressingEvents {
   std::uint32_t max_generations_;  // particles of this generation or later are not assessed
   std::vector<double> share_;      // e for material a against b: share_[a * n + b]
   std::size_t n_materials_ = 0;
-  std::size_t f_in_event_ = 0, f_energy_ = 0, f_force_ = 0, f_baseline_ = 0, f_quiet_ = 0;
+  std::size_t f_in_event_ = 0, f_energy_ = 0, f_force_ = 0, f_baseline_ = 0, f_quiet_ = 0,
+              f_stressing_ = 0;
   struct ContactLoad {
-    double work = 0;     // J, share of the contacts' loading work
-    double force = 0;    // N, sum of the elastic normal contact forces
-    double largest = 0;  // N, largest single elastic normal contact force
+    double work = 0;      // J, share of the contacts' loading work
+    double force = 0;     // N, sum of the elastic normal contact forces
+    double largest = 0;   // N, largest single elastic normal contact force
+    double approach = 0;  // J, share of the normal kinetic energy of the approaching contacts
     double of(ForceMeasure m) const { return m == ForceMeasure::contact_sum ? force : largest; }
   };
   std::vector<ContactLoad> contact_load_;  // per slot, scratch

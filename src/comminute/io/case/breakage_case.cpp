@@ -34,6 +34,10 @@ breakage::MaterialBreakage read_material(const CaseTable& b, const Material& mat
   const CaseTable pr = b.table("progeny");
   m.progeny = breakage::ProgenyRegistry::create(
       pr.choice("model", breakage::ProgenyRegistry::names(), "t10"), pr);
+  m.sizing_energy =
+      pr.choice("sizing_energy", {"stressing", "at_fracture"}, "stressing") == "stressing"
+          ? breakage::SizingEnergy::stressing
+          : breakage::SizingEnergy::at_fracture;
   if (m.criterion->median_fracture_energy(1.0) <= 0)
     m.reference_energy = pr.number("reference_energy", Limits::positive());
   else

@@ -1,14 +1,19 @@
 // Breakage as a laboratory study needs it (issue 8): the peak force of a particle between two
-// platens is the platen force (point 4), a limit on the generations that break (point 7), and the
-// outputs that let a user rebuild the progeny of any set of events (point 10).
+// platens is the platen force (point 4), a limit on the generations that break (point 7), the
+// outputs that let a user rebuild the progeny of any set of events (point 10), and the case keys.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <map>
 
 #include "breakage_engine_fixture.hpp"
 #include "comminute/breakage/criteria/peak_force.hpp"
+#include "comminute/core/error.hpp"
+#include "comminute/io/case/breakage_case.hpp"
+#include "comminute/io/case/dem_case.hpp"
 
 using namespace comminute;
 using namespace comminute::testing;
@@ -91,16 +96,24 @@ struct GasResult {
   std::uint32_t max_particle_generation = 0;  // among the particles present at the end
 };
 
-GasResult run_gas(const breakage::BreakageOptions& opt, int steps) {
-  auto sim = box_gas(0.3, 29);
+// The gas with breakage (fines booked as mass), set up and run for `steps` steps.
+std::unique_ptr<Simulation> gas_run(std::uint64_t seed, const breakage::BreakageOptions& opt,
+                                    int steps, breakage::BreakageModule** module) {
+  auto sim = box_gas(0.3, seed);
   std::vector<std::optional<breakage::MaterialBreakage>> mats;
   mats.emplace_back(weak_material(0.02, 0.3, 0.0005, 0.3, breakage::FinesRule::mass, 0.2));
   auto mod = std::make_unique<breakage::BreakageModule>(std::move(mats), opt);
-  const breakage::BreakageModule* module = mod.get();
+  *module = mod.get();
   sim->modules.push_back(std::move(mod));
   sim->dt = 0.2 * 3.1416 * 0.00018 * std::sqrt(2500 / (5e7 / 2.6)) / (0.1631 * 0.3 + 0.8766);
   sim->setup();
   sim->run(static_cast<std::uint64_t>(steps));
+  return sim;
+}
+
+GasResult run_gas(const breakage::BreakageOptions& opt, int steps) {
+  breakage::BreakageModule* module = nullptr;
+  auto sim = gas_run(29, opt, steps, &module);
   GasResult out;
   for (const auto& r : module->log())
     if (r.broken) ++out.breakages_by_generation[r.generation];
@@ -142,16 +155,8 @@ TEST(BreakageStudy, MaxGenerationsStopsBreakageAtTheLimit) {
 // booked as mass add up to its mass to rounding (1e-12 relative; the last fragment closes the
 // mass), and the ids and generations are copied, not computed.
 TEST(BreakageStudy, FragmentsOfEveryBreakageAreRecordedWithTheirParent) {
-  auto sim = box_gas(0.3, 31);
-  std::vector<std::optional<breakage::MaterialBreakage>> mats;
-  mats.emplace_back(weak_material(0.02, 0.3, 0.0005, 0.3, breakage::FinesRule::mass, 0.2));
-  auto mod =
-      std::make_unique<breakage::BreakageModule>(std::move(mats), breakage::BreakageOptions{});
-  breakage::BreakageModule* module = mod.get();
-  sim->modules.push_back(std::move(mod));
-  sim->dt = 0.2 * 3.1416 * 0.00018 * std::sqrt(2500 / (5e7 / 2.6)) / (0.1631 * 0.3 + 0.8766);
-  sim->setup();
-  sim->run(250);
+  breakage::BreakageModule* module = nullptr;
+  auto sim = gas_run(31, breakage::BreakageOptions{}, 250, &module);
   ASSERT_GT(module->breakages(), 100u);
   struct Children {
     double mass = 0;
@@ -204,4 +209,44 @@ TEST(BreakageStudy, FragmentsOfEveryBreakageAreRecordedWithTheirParent) {
       EXPECT_EQ(t.columns()[5].unit, "kg");
     }
   EXPECT_TRUE(table);
+}
+
+namespace {
+// The drop-weight example with `extra` inserted after `anchor` (a line of the file).
+std::string drop_weight_case(const std::string& anchor, const std::string& extra) {
+  std::ifstream in(std::string(COMMINUTE_SOURCE_DIR) + "/examples/breakage/drop_weight.toml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto at = text.find(anchor);
+  EXPECT_NE(at, std::string::npos) << anchor;
+  const auto eol = text.find('\n', at);
+  return text.substr(0, eol + 1) + extra + "\n" + text.substr(eol + 1);
+}
+breakage::BreakageModule* read_case(const std::string& text) {
+  static std::vector<io::DemCase> keep;  // the module lives in its simulation
+  CaseFile f = CaseFile::parse(text);
+  keep.push_back(io::build_dem_case(f.root()));
+  breakage::BreakageModule* m = io::add_breakage(f.root(), keep.back());
+  f.reject_unknown();
+  return m;
+}
+}  // namespace
+
+// The case keys of points 1, 4 and 7 are read (defaults: stressing energy, largest contact force,
+// no generation limit) and out-of-range values are input errors.
+TEST(BreakageStudy, CaseKeysAreReadAndCheckedWithTheirDefaults) {
+  const breakage::BreakageModule* d = read_case(drop_weight_case("criterion = \"tavares\"", ""));
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->material(0)->sizing_energy, breakage::SizingEnergy::stressing);
+  EXPECT_EQ(d->material(0)->force_measure, breakage::ForceMeasure::largest_contact);
+  const std::string set = drop_weight_case("A = 50.0", "sizing_energy = \"at_fracture\"");
+  const breakage::BreakageModule* s =
+      read_case(drop_weight_case("criterion = \"tavares\"", "force_measure = \"contact_sum\""));
+  EXPECT_EQ(s->material(0)->force_measure, breakage::ForceMeasure::contact_sum);
+  EXPECT_EQ(read_case(set)->material(0)->sizing_energy, breakage::SizingEnergy::at_fracture);
+  EXPECT_NE(read_case(drop_weight_case("log_all_events = true", "max_generations = 2")), nullptr);
+  EXPECT_THROW(read_case(drop_weight_case("log_all_events = true", "max_generations = 0")),
+               InputError);
+  EXPECT_THROW(read_case(drop_weight_case("criterion = \"tavares\"", "force_measure = \"mean\"")),
+               InputError);
+  EXPECT_THROW(read_case(drop_weight_case("A = 50.0", "sizing_energy = \"absorbed\"")), InputError);
 }

@@ -122,7 +122,7 @@ Table BreakageSeries::model_curves(const Simulation& sim) const {
     for (const auto& r : log)
       if (r.material == m && (!first_generation || r.generation == 0)) {
         d += r.diameter;
-        e_max = std::max(e_max, r.specific_energy);
+        e_max = std::max({e_max, r.specific_energy, r.stressing_energy});
         ++n;
       }
     if (n == 0) continue;

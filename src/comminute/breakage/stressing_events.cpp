@@ -61,9 +61,9 @@ void StressingEvents::gather_loads(const Simulation& sim) {
         const std::uint32_t i = nl.first[k], j = nl.second[k];
         const StateRef h = pairs.at(k);
         const std::size_t a = p.material[i], b = p.material[j];
-        acc[i].work += share_[a * n_materials_ + b] * loading.loading_work(h);
-        acc[j].work += share_[b * n_materials_ + a] * loading.loading_work(h);
         const double ab = share_[a * n_materials_ + b], ba = share_[b * n_materials_ + a];
+        acc[i].work += ab * loading.loading_work(h);
+        acc[j].work += ba * loading.loading_work(h);
         const double ke = approach_energy(p.x[i] - p.x[j], p.v[i] - p.v[j],
                                           p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]));
         acc[i].approach += ab * ke;

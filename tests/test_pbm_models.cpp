@@ -184,20 +184,16 @@ TEST(EnergySpectrumRate, LimitingCasesOfTheSkeleton) {
   // (i) one energy class, every stressed particle broken (P ≡ 1) ⇒ S = λ m*/H for every size.
   const CollisionSpectrum one{{0.01}, {500.0}};
   const EnergySpectrumRate all(one, 2.0, 1e-4, 1.0,
-                               std::make_unique<VogelPeukertProbability>(1e9, 0.0, true));
+                               std::make_unique<VogelPeukertProbability>(1e9, 0.0));
   EXPECT_NEAR(all.rate(1e-4, 0), 500 * 1e-4 / 2.0, 1e-15);
   EXPECT_NEAR(all.rate(1e-3, 0), 500 * 1e-4 / 2.0, 1e-15);
-  // (ii) Capece, no threshold, P < 1 ⇒ S linear in x at a fixed spectrum.
-  const CollisionSpectrum spec{{1e-3, 1e-2, 1e-1}, {1000, 100, 10}};
-  const EnergySpectrumRate cap(spec, 2.0, 1e-3, 0.5,
-                               std::make_unique<VogelPeukertProbability>(0.05, 0.0, true));
-  EXPECT_NEAR(cap.rate(2e-4, 0) / cap.rate(1e-4, 0), 2.0, 1e-12);
-  // Capece's explicit form f_mat x (1/H) Σ λ m* (η E/m* − xEmin/x)⁺ with a threshold.
+  // (ii) the explicit sum (1/H) Σ λ m* [1 − exp(−f_mat x (η E/m* − xEmin/x)⁺)] with a threshold
+  // that only the top class exceeds at x = 1e−4 m (E_min = 50 J/kg; e = 0.5, 5, 50.5 J/kg).
+  const CollisionSpectrum spec{{1e-3, 1e-2, 1.01e-1}, {1000, 100, 10}};
   const EnergySpectrumRate thr(spec, 2.0, 1e-3, 0.5,
-                               std::make_unique<VogelPeukertProbability>(0.05, 5e-3, true));
-  const double x = 1e-4, emin = 5e-3 / x;
-  double expect = 0;
-  for (int k = 0; k < 3; ++k)
-    expect += spec.frequency[k] * 1e-3 * std::max(0.0, 0.5 * spec.energy[k] / 1e-3 - emin);
-  EXPECT_NEAR(thr.rate(x, 0), 0.05 * x * expect / 2.0, 1e-12 * thr.rate(x, 0));
+                               std::make_unique<VogelPeukertProbability>(0.05, 5e-3));
+  // Only k = 2 counts: 10 · 1e−3 · (1 − exp(−0.05 · 1e−4 · 0.5)) / 2 = 5e−3 · P. Tolerance: the
+  // code forms 1 − exp(−2.5e−6), whose cancellation leaves up to ulp(1) = 2.2e−16 in P; times
+  // 5e−3, doubled (the classes below the threshold must add exactly 0).
+  EXPECT_NEAR(thr.rate(1e-4, 0), 10 * 1e-3 * -std::expm1(-0.05 * 1e-4 * 0.5) / 2.0, 2.2e-18);
 }

@@ -68,6 +68,24 @@ expect_error "CSV with a non-number" bad_value.toml "feed2.csv:3: key 'initial.f
 sed -e 's/^spacing = "geometric".*/spacing = "geometric"\nratioo = 2.0/' batch_grinding.toml > bad_key.toml
 expect_error "unknown key" bad_key.toml "key 'grid.ratioo': unknown key (did you mean 'ratio'?)"
 
+# --- the ball-mill rates (docs/pbm.md): capece's impact distribution must sum to one; the
+# energy-spectrum keys belong to the _variant rates; the old names are unknown models
+sed -e '$s/,[^,]*$/,0.5/' ball_mill_impacts.csv > bad_impacts.csv   # the last row's probability
+sed -e 's/^specific_energy_file = .*/specific_energy_file = "bad_impacts.csv"/' ball_mill_spectrum.toml > bad_impacts.toml
+line=$(wc -l < bad_impacts.csv)
+check "bad_impacts.csv was made" grep -q ',0.5$' bad_impacts.csv
+expect_error "capece probabilities not summing to one" bad_impacts.toml "bad_impacts.csv:$line: key 'rate.specific_energy_file': the probabilities sum to"
+
+edited_case_fails() {  # <description> <sed expression> <new case> <line pattern> <message>
+  sed -e "$2" ball_mill_spectrum.toml > "$3"
+  expect_error "$1" "$3" "$3:$(grep -n -- "$4" "$3" | cut -d: -f1): $5"
+}
+edited_case_fails "capece with a skeleton key" 's/^impact_frequency = .*/impact_frequency = 4.0\nholdup = 0.5/' \
+  bad_holdup.toml '^holdup' "key 'rate.holdup': capece takes"
+edited_case_fails "old model name" 's/^model = "capece"/model = "tuzcu_rajamani"/' \
+  old_name.toml '^model = ' "key 'rate.model'"
+check "old model name: the known names include the variant" grep -qF "tuzcu_rajamani_variant" <<<"$out"
+
 # --- calibrate: measured data without the passing column
 sed -e 's/^cumulative_passing/x/' -e 's/^size_m,cumulative_passing/size_m,fraction/' measured_60s.csv > m_bad.csv
 sed -e 's/"measured_60s.csv"/"m_bad.csv"/' calibrate_carbon_black.toml > bad_cal.toml

@@ -1,7 +1,7 @@
 #pragma once
 // The fracture energies of particles of every size: the size effect of the median (SizeEffect)
 // and the upper-truncated lognormal around it (FractureEnergyDistribution). Used by the DEM
-// criterion "tavares", the population-balance rate "datta_rajamani" and the UFRJ mill.
+// criterion "tavares", the population-balance rate "datta_rajamani_variant" and the UFRJ mill.
 //
 // Case keys (one set for DEM and population balance; docs/models.md "Case keys"):
 //   e_inf        J/kg  required  E_inf of E50(d)

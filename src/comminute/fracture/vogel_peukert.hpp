@@ -4,7 +4,7 @@
 //   P = 1 - exp[-f_mat x k (W_m,kin - W_m,min)],   W_m,min(x) = (x W_m,min)/x,
 // with the impacts' excess energies summed in the incremental form (Morrison, Shi & Whyte,
 // Minerals Eng. 20 (2007) 303). Used by the DEM criterion "vogel_peukert" and the population-
-// balance rates "capece" (linearised) and "tuzcu_rajamani".
+// balance rates "capece" (its linearised excess, f_mat and threshold) and "tuzcu_rajamani_variant".
 //
 // Edge rules: f_mat > 0, threshold_product >= 0; an excess below zero counts as zero.
 // Case keys: f_mat (kg/(J m), required), threshold_product (x W_m,min, J m/kg, default 0); the

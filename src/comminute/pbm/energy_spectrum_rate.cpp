@@ -1,15 +1,6 @@
 #include "comminute/pbm/energy_spectrum_rate.hpp"
 
-#include <algorithm>
-#include <cmath>
-
 namespace comminute::pbm {
-
-// Vogel & Peukert (2003), docs/models.md eq. C3 with k = 1 impact; eq. S6 when linearised.
-double VogelPeukertProbability::operator()(double energy, double size) const {
-  const double a = m_.exponent(size, energy - m_.threshold(size));
-  return linearised_ ? std::min(1.0, a) : 1 - std::exp(-a);
-}
 
 EnergySpectrumRate::EnergySpectrumRate(CollisionSpectrum spectrum, double holdup,
                                        double captured_mass, double energy_share,
@@ -36,9 +27,9 @@ std::unique_ptr<SelectionFunction> read_energy_spectrum_rate(
       t.number("energy_share", {0, 1, true, false}, 1.0), std::move(probability));
 }
 
-std::unique_ptr<SelectionFunction> read_vogel_peukert_rate(const CaseTable& t, bool linearised) {
+std::unique_ptr<SelectionFunction> read_vogel_peukert_rate(const CaseTable& t) {
   return read_energy_spectrum_rate(
-      t, std::make_unique<VogelPeukertProbability>(fracture::read_vogel_peukert(t), linearised));
+      t, std::make_unique<VogelPeukertProbability>(fracture::read_vogel_peukert(t)));
 }
 
 }  // namespace comminute::pbm

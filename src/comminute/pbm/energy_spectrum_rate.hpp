@@ -3,16 +3,18 @@
 //   S_i = (1/H) Σ_k λ_k · m*_i · P_i(e_ik),   e_ik = η E_k / m*_i
 // H the powder hold-up (kg), m*_i the powder mass stressed per collision (kg), η the share of the
 // collision energy the powder absorbs, P_i the fraction of stressed class-i material that breaks
-// at mass-specific energy e. The published models differ in m* and P; each is its own file:
-//   capece          P = min(1, f_mat·x·(e − E_min(x))⁺) — Vogel–Peukert linearised for one
-//                   impact (Capece, Bilgili & Davé 2014)                      (capece_rate.cpp)
-//   tuzcu_rajamani  P = 1 − exp(−f_mat·x·(e − E_min(x))⁺) — bed breakage probability in
-//                   Vogel–Peukert form standing for the UFLC bed-impact data of Tuzcu & Rajamani
-//                   (2011) [the form is this code's choice]           (tuzcu_rajamani_rate.cpp)
-//   datta_rajamani  P = F_i(e), the single-particle fracture-energy distribution standing for the
-//                   drop-weight data of Datta & Rajamani (2002) [same caveat]
-//                                                                     (datta_rajamani_rate.cpp)
-// m* is a constant bed mass per collision for all three.
+// at mass-specific energy e. Two rates of this code use the skeleton; both are this code's
+// variants (their names say so), not the equations of the papers they stand for:
+//   tuzcu_rajamani_variant  P = 1 − exp(−f_mat·x·(e − E_min(x))⁺), Vogel–Peukert for one impact,
+//                           standing for the UFLC bed-impact data of Tuzcu & Rajamani (2011);
+//                           the paper's E_k weighting is not implemented
+//                                                              (tuzcu_rajamani_variant_rate.cpp)
+//   datta_rajamani_variant  P = F_i(e), the single-particle fracture-energy distribution,
+//                           standing for the drop-weight data of Datta & Rajamani (2002); the
+//                           paper's broken-mass function and energy-dependent b_ij(E_k) are not
+//                           implemented                        (datta_rajamani_variant_rate.cpp)
+// m* is a constant bed mass per collision for both. Capece et al.'s rate is its own equation
+// (capece_rate.hpp).
 #include <memory>
 
 #include "comminute/fracture/fracture_energy_model.hpp"
@@ -29,20 +31,18 @@ class BreakageProbability {
   virtual double operator()(double energy, double size) const = 0;
 };
 
-// Vogel & Peukert (docs/models.md eq. C3) for one impact: P = 1 − exp[−f_mat x (e − xE_min/x)⁺];
-// `linearised` gives Capece's single-impact form min(1, f_mat x (e − xE_min/x)⁺).
+// Vogel & Peukert (docs/models.md eq. C3) for one impact: P = 1 − exp[−f_mat x (e − xE_min/x)⁺].
 class VogelPeukertProbability : public BreakageProbability {
  public:
   // f_mat (kg/(J·m)), threshold_product x·E_min (J·m/kg).
-  VogelPeukertProbability(double f_mat, double threshold_product, bool linearised)
-      : m_{f_mat, threshold_product}, linearised_(linearised) {}
-  VogelPeukertProbability(const fracture::VogelPeukertModel& m, bool linearised)
-      : m_(m), linearised_(linearised) {}
-  double operator()(double energy, double size) const override;
+  VogelPeukertProbability(double f_mat, double threshold_product) : m_{f_mat, threshold_product} {}
+  explicit VogelPeukertProbability(const fracture::VogelPeukertModel& m) : m_(m) {}
+  double operator()(double energy, double size) const override {
+    return m_.probability(size, energy - m_.threshold(size));
+  }
 
  private:
   fracture::VogelPeukertModel m_;
-  bool linearised_;
 };
 
 class FractureEnergyProbability : public BreakageProbability {
@@ -69,7 +69,7 @@ class EnergySpectrumRate : public SelectionFunction {
 // The skeleton's keys (spectrum_file, holdup, captured_mass, energy_share) with the model's P.
 std::unique_ptr<SelectionFunction> read_energy_spectrum_rate(
     const CaseTable& t, std::unique_ptr<BreakageProbability> probability);
-// The skeleton with the Vogel–Peukert P (keys f_mat, threshold_product), linearised or not.
-std::unique_ptr<SelectionFunction> read_vogel_peukert_rate(const CaseTable& t, bool linearised);
+// The skeleton with the Vogel–Peukert P (keys f_mat, threshold_product).
+std::unique_ptr<SelectionFunction> read_vogel_peukert_rate(const CaseTable& t);
 
 }  // namespace comminute::pbm

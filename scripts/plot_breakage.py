@@ -55,8 +55,10 @@ def t10_plot(events, model, out):
     broken = [r for r in events if r["broken [-]"] == "1"]
     if not broken:
         return
+    # the progeny is sized at the stressing energy (default sizing_energy = "stressing")
+    key = "stressing_energy [J/kg]" if "stressing_energy [J/kg]" in broken[0] else "specific_energy [J/kg]"
     fig, ax = plt.subplots(figsize=(6, 4.5))
-    ax.scatter([float(r["specific_energy [J/kg]"]) for r in broken],
+    ax.scatter([float(r[key]) for r in broken],
                [float(r["t10 [%]"]) for r in broken], s=8, alpha=0.5,
                label="breakage events")
     for mat in sorted({r["material [-]"] for r in model}):
@@ -65,7 +67,8 @@ def t10_plot(events, model, out):
         ax.plot([float(r["specific_energy [J/kg]"]) for r in sel],
                 [float(r["t10 [%]"]) for r in sel], "k-",
                 label=f"model A(1-exp(-b'E/E50b)), d = {d:.3g} mm\n(fragments follow the curve of their own size)")
-    ax.set_xlabel("absorbed specific energy E (J/kg)")
+    ax.set_xlabel("stressing energy E (J/kg)" if key.startswith("stressing")
+                  else "absorbed specific energy E (J/kg)")
     ax.set_ylabel("t10 (%)")
     ax.set_title("t10 versus specific energy")
     ax.grid(True, alpha=0.3)

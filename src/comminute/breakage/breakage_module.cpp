@@ -21,7 +21,7 @@ BreakageModule::BreakageModule(std::vector<std::optional<MaterialBreakage>> per_
                                BreakageOptions opt)
     : materials_(std::move(per_material)),
       opt_(with_placement(std::move(opt))),
-      events_(opt_.event_end_steps, opt_.log_all_events),
+      events_(opt_.event_end_steps, opt_.log_all_events, opt_.max_generations),
       growth_(opt_.growth_overlap_ratio, opt_.growth_step),
       replacement_(opt_.placement_model, opt_.replacement_interval) {}
 
@@ -32,6 +32,7 @@ void BreakageModule::register_fields(ParticleStore& p) {
     if (m) m->criterion->attach(p);
   fields_.initialized = p.add_field("breakage.initialized", 0.0);  // 1 once strength is drawn
   fields_.generation = p.add_field("breakage.generation", 0.0);
+  fields_.parent_id = p.add_field("breakage.parent_id", 0.0);   // ids start at 1
   fields_.target = p.add_field("breakage.target_radius", 0.0);  // m, final radius while growing
   events_.register_fields(p);
 }

@@ -55,6 +55,8 @@ class BreakageModule final : public Module {
   std::uint64_t breakages() const { return log_.breakages(); }
   std::uint64_t events() const { return log_.events(); }
   const std::vector<EventRecord>& log() const { return log_.records(); }
+  // One record per fragment of every breakage (breakage_fragments.csv).
+  const std::vector<FragmentRecord>& fragment_log() const { return log_.fragments(); }
   // Fines booked as mass (FinesRule::mass), per material (kg), and their momentum (kg m/s).
   const std::vector<double>& fines_mass() const { return ledger_.fines_mass(); }
   Vec3 fines_momentum() const { return ledger_.fines_momentum(); }

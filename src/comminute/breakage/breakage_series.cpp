@@ -32,6 +32,7 @@ std::vector<Table> BreakageSeries::tables(const Simulation& sim) const {
   std::vector<Table> t;
   t.push_back(model_curves(sim));
   t.push_back(events());
+  t.push_back(fragments());
   t.push_back(ledger());
   return t;
 }
@@ -44,6 +45,7 @@ Table BreakageSeries::events() const {
                               {"diameter", "m"},
                               {"mass", "kg"},
                               {"specific_energy", "J/kg"},
+                              {"stressing_energy", "J/kg"},
                               {"peak_force", "N"},
                               {"strength", "J/kg or N"},
                               {"strength_unit", "-"},
@@ -56,10 +58,23 @@ Table BreakageSeries::events() const {
   for (const auto& r : module_.log()) {
     const MaterialBreakage* m = module_.material(r.material);
     t.add_row({r.time, r.parent_id, r.material, r.generation, r.diameter, r.mass, r.specific_energy,
-               r.peak_force, r.strength,
+               r.stressing_energy, r.peak_force, r.strength,
                m ? std::string(m->criterion->strength_unit()) : std::string(), r.damage_before,
                r.broken, r.fragments, r.fines_particles, r.fines_mass, r.t10});
   }
+  return t;
+}
+
+Table BreakageSeries::fragments() const {
+  Table t("breakage_fragments", {{"time", "s"},
+                                 {"parent_id", "-"},
+                                 {"fragment_id", "-"},
+                                 {"generation", "-"},
+                                 {"diameter", "m"},
+                                 {"mass", "kg"},
+                                 {"fines", "-"}});
+  for (const auto& f : module_.fragment_log())
+    t.add_row({f.time, f.parent_id, f.fragment_id, f.generation, f.diameter, f.mass, f.fines});
   return t;
 }
 
@@ -107,7 +122,7 @@ Table BreakageSeries::model_curves(const Simulation& sim) const {
     for (const auto& r : log)
       if (r.material == m && (!first_generation || r.generation == 0)) {
         d += r.diameter;
-        e_max = std::max(e_max, r.specific_energy);
+        e_max = std::max({e_max, r.specific_energy, r.stressing_energy});
         ++n;
       }
     if (n == 0) continue;

@@ -1,6 +1,7 @@
 #pragma once
 // The outputs of the breakage module, as tables for the output module (SeriesSource):
 //   breakage_events.csv   one row per logged stressing event (the module's event log)
+//   breakage_fragments.csv one row per fragment of every breakage
 //   breakage_ledger.csv   one row per sample: counts, masses, energies, momenta
 //   breakage_model.csv    model curves per material: breakage probability and t10 against the
 //                         absorbed specific energy, at the mean diameter of the logged events
@@ -31,6 +32,7 @@ class BreakageSeries final : public SeriesSource {
 
  private:
   Table events() const;
+  Table fragments() const;
   Table ledger() const;
   Table model_curves(const Simulation& sim) const;
 

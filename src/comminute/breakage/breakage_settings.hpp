@@ -3,6 +3,8 @@
 // replacement): per-material breakage settings, the module's options and the per-particle fields
 // the module registers for all of them.
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -14,6 +16,18 @@
 
 namespace comminute::breakage {
 
+// The force of a stressing event (docs/breakage.md, "Stressing events").
+enum class ForceMeasure {
+  largest_contact,  // the largest single elastic normal contact force (Cleary & Sinnott 2015)
+  contact_sum       // the sum of the elastic normal contact forces on the particle
+};
+
+// The specific energy the progeny (t10) is sized at (docs/breakage.md, "Stressing energy").
+enum class SizingEnergy {
+  stressing,   // the event's stressing energy: absorbed work plus the approach energy still due
+  at_fracture  // the energy absorbed up to the instant of fracture (the rule before issue 8)
+};
+
 // Breakage settings of one material.
 struct MaterialBreakage {
   std::unique_ptr<BreakageCriterion> criterion;
@@ -24,6 +38,8 @@ struct MaterialBreakage {
   double min_fragment_ratio = 0.05;  // fragments below this fraction of the parent diameter: fines
   FinesRule fines = FinesRule::particles;
   double release_fraction = 0;  // eta: fraction of the absorbed energy given as radial speed
+  ForceMeasure force_measure = ForceMeasure::largest_contact;  // the event's peak force
+  SizingEnergy sizing_energy = SizingEnergy::stressing;        // E of the t10 relation
 };
 
 // Settings of material k at [k], or empty (material k never breaks).
@@ -39,13 +55,16 @@ struct BreakageOptions {
   int replacement_interval = 1;  // replace broken parents every this many steps (batched; each
                                  // replacement makes the engine rebuild its neighbour list)
   bool log_all_events = false;   // also log events that did not break (probability plots)
-  double output_interval = 0;    // s between ledger rows / table rewrites (0: every 1000 steps)
+  // Only particles of a generation below this break (1: only the initial set); default unlimited.
+  std::uint32_t max_generations = std::numeric_limits<std::uint32_t>::max();
+  double output_interval = 0;  // s between ledger rows / table rewrites (0: every 1000 steps)
 };
 
 // Indices of the per-particle fields every collaborator reads.
 struct BreakageFields {
   std::size_t initialized = 0;  // 1 once strength is drawn
   std::size_t generation = 0;   // 0 for particles of the initial set
+  std::size_t parent_id = 0;    // id of the particle a fragment came from (0: initial set)
   std::size_t target = 0;       // m, final radius while growing (0 otherwise)
 };
 

@@ -95,9 +95,12 @@ void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t paren
   // Progeny sizes (docs/models.md eq. P1-P4).
   // E50b: the median fracture energy of the particles that break at this stressing energy, or
   // the class median (progeny key e50b; docs/models.md eq. P1b)
-  double e50b = mat.criterion->t10_median_energy(d, rec.specific_energy, mat.progeny->e50b_rule());
+  // E: the event's stressing energy, or the energy absorbed up to fracture (key sizing_energy)
+  const double e =
+      mat.sizing_energy == SizingEnergy::stressing ? rec.stressing_energy : rec.specific_energy;
+  double e50b = mat.criterion->t10_median_energy(d, e, mat.progeny->e50b_rule());
   if (e50b <= 0) e50b = mat.reference_energy;
-  rec.t10 = mat.progeny->t10(rec.specific_energy, e50b);
+  rec.t10 = mat.progeny->t10(e, e50b);
   const ProgenyDistribution dist = mat.progeny->distribution(d, rec.t10);
   const double min_size = std::max(mat.min_fragment_size, mat.min_fragment_ratio * d);
   const Progeny progeny = draw_progeny(dist, mass, density, min_size, mat.fines, ctx.strength_rng);
@@ -149,11 +152,14 @@ void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t paren
     init.flags = f.fines ? pflag::unbreakable : 0;
     const bool growing = placed[k].r < radii[k];
     if (growing) init.flags |= pflag::growing;
-    fragments_added_.push_back({p.add_with_mass(init, f.mass), radii[k]});
+    const std::uint64_t id = p.add_with_mass(init, f.mass);
+    fragments_added_.push_back({id, radii[k]});
+    ctx.log.add_fragment({sim.time, p.id[parent], id, f.diameter, f.mass, generation, f.fines});
     const std::size_t s = p.size() - 1;
     p.inertia[s] = inertia[k];  // of the full-size sphere from the start
     for (std::size_t q = 0; q < parent_fields.size(); ++q) p.field(q)[s] = parent_fields[q];
     p.field(ctx.fields.generation)[s] = generation;
+    p.field(ctx.fields.parent_id)[s] = static_cast<double>(p.id[parent]);
     p.field(ctx.fields.target)[s] = growing ? radii[k] : 0.0;
     ctx.born(s);  // every fragment draws its own strength for its size
     if (growing) ctx.growth.started();

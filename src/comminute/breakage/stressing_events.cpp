@@ -8,12 +8,25 @@
 
 namespace comminute::breakage {
 
+namespace {
+// Normal relative kinetic energy (J) of a contact still approaching: (1/2) mu u^2 with u the
+// approach speed along `normal` (from the other body to this one; any length) of the relative
+// velocity `dv` (this body's minus the other's), 0 when separating.
+double approach_energy(const Vec3& normal, const Vec3& dv, double reduced_mass) {
+  const double n2 = norm2(normal);
+  if (!(n2 > 0)) return 0.0;
+  const double u = -dot(dv, normal) / std::sqrt(n2);
+  return u > 0 ? 0.5 * reduced_mass * u * u : 0.0;
+}
+}  // namespace
+
 void StressingEvents::register_fields(ParticleStore& p) {
   f_in_event_ = p.add_field("breakage.in_event", 0.0);
   f_energy_ = p.add_field("breakage.event_energy", 0.0);  // J/kg
   f_force_ = p.add_field("breakage.event_force", 0.0);    // N
   f_baseline_ = p.add_field("breakage.baseline", 0.0);    // J/kg
   f_quiet_ = p.add_field("breakage.quiet_steps", 0.0);
+  f_stressing_ = p.add_field("breakage.stressing_energy", 0.0);  // J/kg
 }
 
 void StressingEvents::configure(const Simulation& sim) {
@@ -31,7 +44,7 @@ void StressingEvents::configure(const Simulation& sim) {
 
 void StressingEvents::clear(ParticleStore& p, std::size_t s) const {
   p.field(f_in_event_)[s] = p.field(f_energy_)[s] = p.field(f_force_)[s] = 0;
-  p.field(f_baseline_)[s] = p.field(f_quiet_)[s] = 0;
+  p.field(f_baseline_)[s] = p.field(f_quiet_)[s] = p.field(f_stressing_)[s] = 0;
 }
 
 void StressingEvents::gather_loads(const Simulation& sim) {
@@ -48,25 +61,48 @@ void StressingEvents::gather_loads(const Simulation& sim) {
         const std::uint32_t i = nl.first[k], j = nl.second[k];
         const StateRef h = pairs.at(k);
         const std::size_t a = p.material[i], b = p.material[j];
-        acc[i].work += share_[a * n_materials_ + b] * loading.loading_work(h);
-        acc[j].work += share_[b * n_materials_ + a] * loading.loading_work(h);
-        acc[i].force += loading.normal_force(h);
-        acc[j].force += loading.normal_force(h);
+        const double ab = share_[a * n_materials_ + b], ba = share_[b * n_materials_ + a];
+        acc[i].work += ab * loading.loading_work(h);
+        acc[j].work += ba * loading.loading_work(h);
+        const double ke = approach_energy(p.x[i] - p.x[j], p.v[i] - p.v[j],
+                                          p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]));
+        acc[i].approach += ab * ke;
+        acc[j].approach += ba * ke;
+        const double f = loading.normal_force(h);
+        acc[i].force += f;
+        acc[j].force += f;
+        acc[i].largest = std::max(acc[i].largest, f);
+        acc[j].largest = std::max(acc[j].largest, f);
       },
       [](ContactLoad x, const ContactLoad& y) {
-        return ContactLoad{x.work + y.work, x.force + y.force};
+        return ContactLoad{x.work + y.work, x.force + y.force, std::max(x.largest, y.largest),
+                           x.approach + y.approach};
       });
   // a ghost's contacts load its owner (periodic boundaries)
   for (std::size_t s = p.owned(); s < n; ++s) {
     ContactLoad& o = contact_load_[p.owner_of(s)];
     o.work += contact_load_[s].work;
     o.force += contact_load_[s].force;
+    o.largest = std::max(o.largest, contact_load_[s].largest);
+    o.approach += contact_load_[s].approach;
   }
+  std::vector<WallContact> found;
   for (const auto& c : sim.wall_contacts()) {
     const std::size_t a = p.material[c.particle], b = sim.walls[c.wall]->material;
     const StateRef h = sim.wall_state().at(c.candidate);
-    contact_load_[c.particle].work += share_[a * n_materials_ + b] * loading.loading_work(h);
-    contact_load_[c.particle].force += loading.normal_force(h);
+    const double e = share_[a * n_materials_ + b];
+    contact_load_[c.particle].work += e * loading.loading_work(h);
+    const Wall& w = *sim.walls[c.wall];
+    found.clear();
+    w.contacts(p.x[c.particle], p.radius[c.particle], 0.0, found);
+    for (const auto& fc : found)
+      if (fc.feature == c.feature)
+        contact_load_[c.particle].approach +=
+            e * approach_energy(fc.normal, p.v[c.particle] - w.kinematics.velocity_at(fc.point),
+                                p.mass[c.particle]);
+    const double f = loading.normal_force(h);
+    contact_load_[c.particle].force += f;
+    contact_load_[c.particle].largest = std::max(contact_load_[c.particle].largest, f);
   }
 }
 
@@ -79,6 +115,7 @@ void StressingEvents::assess(Simulation& sim, const BreakageMaterials& materials
   auto& force = p.field(f_force_);
   auto& baseline = p.field(f_baseline_);
   auto& quiet = p.field(f_quiet_);
+  auto& stressing = p.field(f_stressing_);
   const auto& target = p.field(f.target);
   for (std::size_t i = 0; i < n; ++i) {
     const auto& mat = materials[p.material[i]];
@@ -88,7 +125,7 @@ void StressingEvents::assess(Simulation& sim, const BreakageMaterials& materials
     // FragmentGrowth::grow).
     const double d = 2 * std::max(p.radius[i], target[i]);
     const double s = contact_load_[i].work / p.mass[i];  // J/kg
-    if (d < mat->min_breakable_size) {
+    if (d < mat->min_breakable_size || p.field(f.generation)[i] >= max_generations_) {
       baseline[i] = s;
       continue;
     }
@@ -102,6 +139,7 @@ void StressingEvents::assess(Simulation& sim, const BreakageMaterials& materials
       r.diameter = d;
       r.mass = p.mass[i];
       r.specific_energy = energy[i];
+      r.stressing_energy = std::max(stressing[i], energy[i]);
       r.peak_force = force[i];
       r.strength = crit.strength(p, i, d);
       r.damage_before = crit.damage(p, i);
@@ -112,7 +150,7 @@ void StressingEvents::assess(Simulation& sim, const BreakageMaterials& materials
       if (log_all_ && !broke) log.add(record());
       if (!broke) crit.survive(p, i, d, {energy[i], force[i]});
       in_event[i] = 0;
-      energy[i] = force[i] = 0;
+      energy[i] = force[i] = stressing[i] = 0;
       quiet[i] = 0;
     };
     if (s <= 0) {  // no loaded contact: any event is over
@@ -126,7 +164,7 @@ void StressingEvents::assess(Simulation& sim, const BreakageMaterials& materials
         continue;
       }
       in_event[i] = 1;
-      energy[i] = force[i] = 0;
+      energy[i] = force[i] = stressing[i] = 0;
       quiet[i] = 0;
     }
     const double e = s - baseline[i];
@@ -136,7 +174,8 @@ void StressingEvents::assess(Simulation& sim, const BreakageMaterials& materials
     } else {
       quiet[i] += 1;
     }
-    force[i] = std::max(force[i], contact_load_[i].force);
+    stressing[i] = std::max(stressing[i], e + contact_load_[i].approach / p.mass[i]);
+    force[i] = std::max(force[i], contact_load_[i].of(mat->force_measure));
     const StressingEvent ev{energy[i], force[i]};
     if (crit.breaks(p, i, d, ev)) {
       EventRecord r = record();

@@ -4,11 +4,18 @@
 // force up to the contact's largest overlap) and e_c = 1/(1 + k_p/k_o) the particle's share. An
 // event starts when S rises above the baseline left by the previous event (0 for a particle
 // without contacts); its energy is the running maximum of S - baseline and its force the running
-// maximum of the summed elastic normal forces. It ends when the particle loses all contacts, or
-// when S has not risen for `event_end_steps` steps; then, if it did not break, the criterion's
-// survive() applies (damage), and the baseline becomes the current S.
+// maximum of the largest single elastic normal contact force (or of their sum, by the material's
+// force_measure). It ends when the particle loses all contacts, or when S has not risen for
+// `event_end_steps` steps; then, if it did not break, the criterion's survive() applies (damage),
+// and the baseline becomes the current S. Particles of generation max_generations or later are
+// not assessed.
+// The event's stressing energy (J/kg) is the running maximum of S - baseline + K, K = sum over the
+// touching contacts of e_c (1/2) mu_c u_c^2 / m: the particle's share of the normal relative
+// kinetic energy of the contacts still approaching (u_c > 0 the approach speed, mu_c the reduced
+// mass; m for a wall). For a single impact it is e E from the first step of contact, E the
+// impact energy per unit mass, before the dashpot takes any; for a slow compression it is S.
 // Owns the per-particle event fields (breakage.in_event, event_energy, event_force, baseline,
-// quiet_steps) and the energy shares per material pair.
+// quiet_steps, stressing_energy) and the energy shares per material pair.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -25,7 +32,8 @@ class StressingEvents {
   // A particle (slot) broke in the event `record`; it is flagged unbreakable until replaced.
   using BrokeFn = std::function<void(std::size_t slot, const EventRecord& record)>;
 
-  StressingEvents(int end_steps, bool log_all) : end_steps_(end_steps), log_all_(log_all) {}
+  StressingEvents(int end_steps, bool log_all, std::uint32_t max_generations)
+      : end_steps_(end_steps), log_all_(log_all), max_generations_(max_generations) {}
 
   void register_fields(ParticleStore& p);
   // Energy shares e of every material pair (after setup or a checkpoint).
@@ -43,12 +51,17 @@ class StressingEvents {
  private:
   int end_steps_;
   bool log_all_;
-  std::vector<double> share_;  // e for material a against b: share_[a * n + b]
+  std::uint32_t max_generations_;  // particles of this generation or later are not assessed
+  std::vector<double> share_;      // e for material a against b: share_[a * n + b]
   std::size_t n_materials_ = 0;
-  std::size_t f_in_event_ = 0, f_energy_ = 0, f_force_ = 0, f_baseline_ = 0, f_quiet_ = 0;
+  std::size_t f_in_event_ = 0, f_energy_ = 0, f_force_ = 0, f_baseline_ = 0, f_quiet_ = 0,
+              f_stressing_ = 0;
   struct ContactLoad {
-    double work = 0;   // J, share of the contacts' loading work
-    double force = 0;  // N, sum of the elastic normal contact forces
+    double work = 0;      // J, share of the contacts' loading work
+    double force = 0;     // N, sum of the elastic normal contact forces
+    double largest = 0;   // N, largest single elastic normal contact force
+    double approach = 0;  // J, share of the normal kinetic energy of the approaching contacts
+    double of(ForceMeasure m) const { return m == ForceMeasure::contact_sum ? force : largest; }
   };
   std::vector<ContactLoad> contact_load_;  // per slot, scratch
 };

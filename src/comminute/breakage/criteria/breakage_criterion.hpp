@@ -25,7 +25,8 @@ namespace comminute::breakage {
 struct StressingEvent {
   double specific_energy =
       0;                  // J/kg, energy absorbed by the particle (its share e of the contact work)
-  double peak_force = 0;  // N, largest sum of elastic normal contact forces on the particle
+  double peak_force = 0;  // N, peak of the largest single elastic normal contact force on the
+                          // particle (or of their sum: the material's force_measure)
 };
 
 class BreakageCriterion {

@@ -1,8 +1,10 @@
 #pragma once
 // Peak-force criteria (Cleary & Sinnott, Minerals Eng. 74 (2015) 178; docs/models.md eq. C1-C2).
-// A particle breaks when the peak of the sum of elastic normal contact forces on it within one
-// stressing event reaches F_crit(d) times its own random strength factor (lognormal with median
-// 1 and log-standard-deviation `factor_sigma`; 0 = deterministic). The force is not time-filtered.
+// A particle breaks when the peak force of one stressing event (by default the largest single
+// elastic normal contact force, this project's reading of Cleary & Sinnott; the sum with
+// force_measure = "contact_sum", docs/breakage.md) reaches F_crit(d) times its own random strength
+// factor (lognormal with median 1 and log-standard-deviation `factor_sigma`; 0 = deterministic).
+// The force is not time-filtered.
 #include "comminute/breakage/criteria/breakage_criterion.hpp"
 
 namespace comminute::breakage {

@@ -23,6 +23,10 @@ breakage::MaterialBreakage read_material(const CaseTable& b, const Material& mat
                 ? breakage::FinesRule::mass
                 : breakage::FinesRule::particles;
   m.release_fraction = b.number("release_fraction", Limits::unit_interval(), 0.0);
+  m.force_measure = b.choice("force_measure", {"largest_contact", "contact_sum"},
+                             "largest_contact") == "largest_contact"
+                        ? breakage::ForceMeasure::largest_contact
+                        : breakage::ForceMeasure::contact_sum;
   if (m.min_fragment_size <= 0 && m.min_breakable_size <= 0)
     b.fail("min_fragment_size",
            "set min_fragment_size or min_breakable_size (m) > 0: otherwise fragments shrink "
@@ -30,6 +34,10 @@ breakage::MaterialBreakage read_material(const CaseTable& b, const Material& mat
   const CaseTable pr = b.table("progeny");
   m.progeny = breakage::ProgenyRegistry::create(
       pr.choice("model", breakage::ProgenyRegistry::names(), "t10"), pr);
+  m.sizing_energy =
+      pr.choice("sizing_energy", {"stressing", "at_fracture"}, "stressing") == "stressing"
+          ? breakage::SizingEnergy::stressing
+          : breakage::SizingEnergy::at_fracture;
   if (m.criterion->median_fracture_energy(1.0) <= 0)
     m.reference_energy = pr.number("reference_energy", Limits::positive());
   else
@@ -67,6 +75,8 @@ breakage::BreakageModule* add_breakage(const CaseTable& root, DemCase& dem) {
         g->number("growth_overlap_ratio", Limits{0.0, 0.5, false, false}, 0.001);
     opt.event_end_steps = static_cast<int>(g->integer("event_end_steps", 1, 1000000, 20));
     opt.log_all_events = g->boolean("log_all_events", false);
+    if (g->has("max_generations"))
+      opt.max_generations = static_cast<std::uint32_t>(g->integer("max_generations", 1, 1000000));
     opt.replacement_interval = static_cast<int>(g->integer("replacement_interval", 1, 1000, 1));
     opt.output_interval = g->number("output_interval", Limits::non_negative(), 0.0);
     psd_interval = g->number("size_distribution_interval", Limits::non_negative(), 0.0);

@@ -33,6 +33,7 @@ TimeStepPolicy::Decision TimeStepPolicy::decide(Simulation& sim) const {
       if (lightest == nullptr || s.radius < lightest->radius) lightest = &s;
     }
   Decision d;
+  sim.step_control.reset();
   if (given_ > 0) {
     d.dt = given_;
     d.note = fmt::format("time step {:.4g} s (set) = {:.1f} % of the Rayleigh time {:.4g} s", d.dt,
@@ -51,12 +52,20 @@ TimeStepPolicy::Decision TimeStepPolicy::decide(Simulation& sim) const {
     d.dt = fraction_ * t_inserted;
     d.note = fmt::format("time step {:.4g} s = {:.0f} % of the Rayleigh time {:.4g} s", d.dt,
                          100 * fraction_, t_inserted);
+    // Smaller particles can appear (fragments): the step follows the particles present, down to
+    // the smallest one announced, instead of being cut for it from the start.
+    const ParticleSize* smallest = nullptr;
     for (const auto& s : sizes)
-      if (s.announced && fraction_ * rayleigh(s) < d.dt) {
-        d.dt = fraction_ * rayleigh(s);
-        d.note += fmt::format("; lowered to {:.4g} s = {:.0f} % of the Rayleigh time of {}", d.dt,
-                              100 * fraction_, s.what);
-      }
+      if (s.announced && fraction_ * rayleigh(s) < d.dt &&
+          (smallest == nullptr || rayleigh(s) < rayleigh(*smallest)))
+        smallest = &s;
+    if (smallest != nullptr) {
+      sim.step_control.emplace(fraction_, d.dt);
+      d.note += fmt::format(
+          "; follows the particles present: {:.0f} % of the Rayleigh time of the smallest, down "
+          "to {:.4g} s for {}",
+          100 * fraction_, fraction_ * rayleigh(*smallest), smallest->what);
+    }
   }
   if (lightest != nullptr) {  // the law's own limit for the lightest pair
     const Material& m = sim.materials.material(lightest->material);

@@ -65,25 +65,25 @@ Gas gas(std::uint64_t seed, double fraction, double fixed_dt = 0, double frictio
   return g;
 }
 
-// fraction x the smallest Rayleigh time of the particles present, each at its full size.
-double limit_of_present(const ParticleStore& p, double fraction) {
-  double r = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < p.size(); ++i)
-    r = std::min(r, std::max(p.radius[i], full_radius(p, i)));
-  return fraction * rayleigh(r);
+// fraction x the Rayleigh time of particle i at its full size.
+double limit_of(const ParticleStore& p, std::size_t i, double fraction) {
+  return fraction * rayleigh(std::max(p.radius[i], full_radius(p, i)));
 }
 
 }  // namespace
 
 // Before any breakage the step is 0.2 t_R of the 3 mm particles present (the past policy cut it
-// up front to 0.2 t_R of the smallest fragment breakage could make, 0.3 x 1.2 mm: 8.3 x smaller);
-// once fragments smaller than any particle present appear, it drops to 0.2 t_R of the smallest
-// of them. Expected values: the one formula, evaluated on the radius each particle's mass has at
-// the density; the relative 1e-12 covers the cube root in that radius (a few ulp).
+// up front to 0.2 t_R of the smallest fragment breakage could make, 0.3 x 1.2 mm: 8.3 x smaller).
+// Once fragments appear, every contact is resolved from its first step on: after each step, every
+// pair that overlaps and every particle on a wall was integrated with a step no larger than 0.2
+// t_R of its smallest particle (brute force over all pairs). The step falls to a fragment's when
+// one touches, and is never below that of the smallest particle present. The relative 1e-12
+// covers the cube root in the full radius (a few ulp); the rest is the one formula.
 TEST(AdaptiveTimeStep, FollowsTheParticlesPresent) {
   Gas g = gas(29, 0.2);
   Simulation& sim = *g.sim;
-  EXPECT_EQ(g.decision.dt, 0.2 * rayleigh(0.0015));  // exact: one formula
+  const double ceiling = 0.2 * rayleigh(0.0015);
+  EXPECT_EQ(g.decision.dt, ceiling);  // exact: one formula
   EXPECT_TRUE(sim.step_control.has_value()) << g.decision.note;
   EXPECT_NE(g.decision.note.find("follows the particles present"), std::string::npos)
       << g.decision.note;
@@ -93,23 +93,43 @@ TEST(AdaptiveTimeStep, FollowsTheParticlesPresent) {
     sim.step();
     ++steps;
     if (g.module->breakages() == 0) {
-      ASSERT_EQ(sim.dt, 0.2 * rayleigh(0.0015)) << "step " << steps;
+      ASSERT_EQ(sim.dt, ceiling) << "step " << steps;
     }
   }
   ASSERT_GT(g.module->breakages(), 0u);
   double smallest_dt = sim.dt;
+  std::uint64_t long_steps = 0, checked_contacts = 0;
   for (int k = 0; k < 400; ++k) {
-    const double expected = limit_of_present(sim.particles, 0.2);  // what the step will use
+    const double floor = sim.step_control->all_present(sim);  // the smallest particle present
+    const std::uint64_t born = sim.particles.next_id();       // fragments made at the step's end
     sim.step();
-    ASSERT_NEAR(sim.dt, expected, 1e-12 * expected) << "step " << steps + k;
+    const auto& p = sim.particles;
+    ASSERT_GE(sim.dt, floor) << "step " << steps + k;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (std::size_t j = i + 1; j < p.size(); ++j) {
+        if (p.id[i] >= born || p.id[j] >= born) continue;  // not integrated yet
+        const double reach = p.radius[i] + p.radius[j];
+        if (norm2(p.x[i] - p.x[j]) >= reach * reach) continue;
+        ++checked_contacts;
+        const double lim = std::min(limit_of(p, i, 0.2), limit_of(p, j, 0.2));
+        ASSERT_LE(sim.dt, lim * (1 + 1e-12)) << "step " << steps + k << ", pair " << i << " " << j;
+      }
+    for (const auto& c : sim.wall_contacts()) {  // slots as of the forces: before replacement
+      if (c.particle < p.size() && p.id[c.particle] == c.id) {
+        ASSERT_LE(sim.dt, limit_of(p, c.particle, 0.2) * (1 + 1e-12)) << "step " << steps + k;
+      }
+    }
     smallest_dt = std::min(smallest_dt, sim.dt);
+    if (sim.dt == ceiling) ++long_steps;
   }
-  // fragments of 3 mm parents are >= 0.9 mm, so the step fell at least below that of 1.5 mm and
-  // never below that of the smallest fragment possible (0.36 mm)
-  EXPECT_LT(smallest_dt, 0.2 * rayleigh(0.0015));
+  ASSERT_GT(checked_contacts, 0u);
+  // fragments of 3 mm parents are >= 0.9 mm: the step fell below that of 1.5 mm, never below
+  // that of the smallest fragment possible (0.36 mm)
+  EXPECT_LT(smallest_dt, ceiling);
   EXPECT_GE(smallest_dt, 0.2 * rayleigh(0.00018) * (1 - 1e-12));
   RecordProperty("steps_before_first_breakage", std::to_string(steps));
   RecordProperty("smallest_dt_s", fmt::format("{:.4g}", smallest_dt));
+  RecordProperty("long_steps_of_400_after", std::to_string(long_steps));
 }
 
 namespace {

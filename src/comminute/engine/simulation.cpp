@@ -44,11 +44,7 @@ void Simulation::run(std::uint64_t n) {
 
 void Simulation::step() {
   if (!is_setup_) setup();
-  if (step_control) {
-    const TimeStepControl::Step s = step_control->decide(*this);
-    dt = s.dt;
-    if (s.rebuild) tracker_.invalidate();
-  }
+  if (step_control) dt = step_control->decide(particles, materials);
   tracker_.moved(VelocityVerlet::kick_drift(particles, dt, gravity, tracker_.build_positions()));
   forces_cleared_ = true;
   for (std::size_t k = 0; k < walls.size(); ++k) {

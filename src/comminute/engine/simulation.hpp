@@ -93,10 +93,6 @@ class Simulation {
   const ContactStateStore& pair_state() const { return pair_state_; }
   const ContactStateStore& wall_state() const { return wall_state_; }
   const std::vector<WallContactRecord>& wall_contacts() const { return wall_contacts_; }
-  // The particle-wall candidates (near a wall at the last list build).
-  const std::vector<WallContactRecord>& wall_candidates() const {
-    return tracker_.wall_candidates();
-  }
   // The contact model (law, rolling, adhesion, loading record), assembled at setup or load.
   const ContactPipeline& contacts() const { return contacts_; }
   Observables observe() const;

@@ -88,3 +88,21 @@ TEST(TimeStepPolicy, TheLinearLawWarnsWhenItsContactTimeIsUnderResolved) {
     EXPECT_EQ(warned, dt > 1e-4) << dt;
   }
 }
+
+// A step that follows the particles present can fall to the smallest announced size: the step
+// count guard (a unit mistake) counts the run at that step. Here 10 steps at the inserted step
+// become 10^10 at the step of an announced 1e-12 m fragment (t_R is linear in the radius).
+TEST(TimeStepPolicy, TheStepCountGuardCountsAtTheSmallestStepAFollowingStepCanReach) {
+  auto sim = make_simulation({});
+  sim->modules.push_back(std::make_unique<Announces>(1e-12));
+  const double end_time = 10 * 0.2 * rayleigh(*sim, 1e-3);
+  const CaseFile f = CaseFile::parse("[simulation]\n");
+  TimeStepPolicy policy(f.root().table("simulation"), end_time);
+  policy.add({1e-3, 0, "insert[0]", false});
+  try {
+    policy.decide(*sim);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("simulation.end_time"), std::string::npos) << e.what();
+  }
+}

@@ -33,6 +33,7 @@ TimeStepPolicy::Decision TimeStepPolicy::decide(Simulation& sim) const {
       if (lightest == nullptr || s.radius < lightest->radius) lightest = &s;
     }
   Decision d;
+  double dt_smallest = 0;  // s, the smallest step a following step can reach (0: fixed step)
   sim.step_control.reset();
   if (given_ > 0) {
     d.dt = given_;
@@ -61,6 +62,7 @@ TimeStepPolicy::Decision TimeStepPolicy::decide(Simulation& sim) const {
         smallest = &s;
     if (smallest != nullptr) {
       sim.step_control.emplace(fraction_, d.dt);
+      dt_smallest = fraction_ * rayleigh(*smallest);
       d.note += fmt::format(
           "; follows the particles present: {:.0f} % of the Rayleigh time of the smallest, down "
           "to {:.4g} s for {}",
@@ -82,10 +84,12 @@ TimeStepPolicy::Decision TimeStepPolicy::decide(Simulation& sim) const {
     table_.fail(key, fmt::format("the time step {:.4g} s exceeds the end time {:.4g} s: the run "
                                  "would take no step",
                                  d.dt, end_time_));
-  if (end_time_ / d.dt > max_steps)
+  // with a following step, the count at its smallest (a run of small fragments only)
+  const double dt_min = dt_smallest > 0 ? dt_smallest : d.dt;
+  if (end_time_ / dt_min > max_steps)
     table_.fail(key, fmt::format("end time {:.4g} s / time step {:.4g} s = {:.3g} steps, more than "
                                  "the limit of {:.0e} steps",
-                                 end_time_, d.dt, end_time_ / d.dt, max_steps));
+                                 end_time_, dt_min, end_time_ / dt_min, max_steps));
   sim.dt = d.dt;
   return d;
 }

@@ -29,18 +29,32 @@ double rayleigh(const Simulation& sim, double radius) {
 }
 }  // namespace
 
-TEST(TimeStepPolicy, FractionOfTheSmallestRayleighTimeIncludingAnnouncedSizes) {
+// The step is the fraction of the smallest Rayleigh time of the inserted sizes; sizes a module
+// announces (fragments) do not cut it up front: they make it follow the particles present
+// (time_step_control.hpp; its behaviour in a breaking run: test_adaptive_time_step.cpp).
+TEST(TimeStepPolicy, FractionOfTheInsertedRayleighTimeFollowingAnnouncedSizes) {
   auto sim = make_simulation({});
   const CaseFile f = CaseFile::parse("[simulation]\ntime_step_fraction = 0.1\n");
   TimeStepPolicy policy(f.root().table("simulation"), 1.0);
   policy.add({1e-3, 0, "insert[0]", false});
   policy.add({2e-3, 0, "insert[1]", false});
   EXPECT_EQ(policy.decide(*sim).dt, 0.1 * rayleigh(*sim, 1e-3));  // exact: one formula
+  EXPECT_FALSE(sim->step_control.has_value());  // nothing smaller can appear: a fixed step
   sim->modules.push_back(std::make_unique<Announces>(1e-4));
   const auto d = policy.decide(*sim);
-  EXPECT_EQ(d.dt, 0.1 * rayleigh(*sim, 1e-4));
+  EXPECT_EQ(d.dt, 0.1 * rayleigh(*sim, 1e-3));
   EXPECT_EQ(sim->dt, d.dt);
-  EXPECT_NE(d.note.find("lowered"), std::string::npos) << d.note;
+  ASSERT_TRUE(sim->step_control.has_value());
+  EXPECT_EQ(sim->step_control->ceiling(), d.dt);
+  EXPECT_EQ(sim->step_control->fraction(), 0.1);
+  EXPECT_NE(d.note.find("follows the particles present"), std::string::npos) << d.note;
+  // with only the inserted particles present the control keeps the inserted step
+  add_sphere(*sim, {0, 0, 0}, 1e-3, {});
+  add_sphere(*sim, {0.01, 0, 0}, 2e-3, {});
+  EXPECT_EQ(sim->step_control->decide(sim->particles, sim->materials), d.dt);
+  // a particle of the announced size brings it down to that size's step
+  add_sphere(*sim, {0.02, 0, 0}, 1e-4, {});
+  EXPECT_EQ(sim->step_control->decide(sim->particles, sim->materials), 0.1 * rayleigh(*sim, 1e-4));
 }
 
 TEST(TimeStepPolicy, AGivenStepTooLargeForAnnouncedSizesIsRefusedNamingTheKey) {
@@ -72,5 +86,23 @@ TEST(TimeStepPolicy, TheLinearLawWarnsWhenItsContactTimeIsUnderResolved) {
     bool warned = false;
     for (const auto& w : d.warnings) warned |= w.find("linear contact time") != std::string::npos;
     EXPECT_EQ(warned, dt > 1e-4) << dt;
+  }
+}
+
+// A step that follows the particles present can fall to the smallest announced size: the step
+// count guard (a unit mistake) counts the run at that step. Here 10 steps at the inserted step
+// become 10^10 at the step of an announced 1e-12 m fragment (t_R is linear in the radius).
+TEST(TimeStepPolicy, TheStepCountGuardCountsAtTheSmallestStepAFollowingStepCanReach) {
+  auto sim = make_simulation({});
+  sim->modules.push_back(std::make_unique<Announces>(1e-12));
+  const double end_time = 10 * 0.2 * rayleigh(*sim, 1e-3);
+  const CaseFile f = CaseFile::parse("[simulation]\n");
+  TimeStepPolicy policy(f.root().table("simulation"), end_time);
+  policy.add({1e-3, 0, "insert[0]", false});
+  try {
+    policy.decide(*sim);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("simulation.end_time"), std::string::npos) << e.what();
   }
 }

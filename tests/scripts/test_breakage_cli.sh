@@ -40,7 +40,8 @@ rc=$?
 set -e
 [ "$rc" -eq 2 ] || { echo "unknown criterion: exit $rc"; cat "$work/bad1.log"; exit 1; }
 grep -q "materials.ore.breakage.criterion" "$work/bad1.log" || { cat "$work/bad1.log"; exit 1; }
-sed -e '/^min_breakable_size/d' -e '/^min_fragment_ratio/d' "$work/drop.toml" > "$work/bad2.toml"
+sed -e '/^min_breakable_size/d' -e '/^min_fragment_ratio/d' -e '/^min_fragment_size/d' "$work/drop.toml" \
+  > "$work/bad2.toml"
 set +e
 "$bin" check "$work/bad2.toml" > "$work/bad2.log" 2>&1
 rc=$?

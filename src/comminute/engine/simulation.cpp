@@ -46,6 +46,7 @@ void Simulation::run(std::uint64_t n) {
 
 void Simulation::step() {
   if (!is_setup_) setup();
+  if (step_control) dt = step_control->decide(particles, materials);
   tracker_.moved(VelocityVerlet::kick_drift(particles, dt, gravity, tracker_.build_positions()));
   forces_cleared_ = true;
   for (std::size_t k = 0; k < walls.size(); ++k) {
@@ -142,6 +143,7 @@ Observables Simulation::observe() const {
   const auto& p = particles;
   o.time = time;
   o.step = step_count;
+  o.dt = dt;
   o.particles = p.size();
   for (auto t : pair_state_.active) o.contacts += t;
   o.wall_contacts = wall_contacts_.size();

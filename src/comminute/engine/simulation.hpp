@@ -6,6 +6,7 @@
 // engine owns.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "comminute/contact/cohesion.hpp"
@@ -18,6 +19,7 @@
 #include "comminute/engine/module.hpp"
 #include "comminute/engine/pair_force_loop.hpp"
 #include "comminute/engine/pair_tracker.hpp"
+#include "comminute/engine/time_step_control.hpp"
 #include "comminute/engine/wall_contact.hpp"
 #include "comminute/engine/wall_force_loop.hpp"
 #include "comminute/geometry/wall.hpp"
@@ -30,6 +32,7 @@ namespace comminute {
 struct Observables {
   double time = 0;
   std::uint64_t step = 0;
+  double dt = 0;  // s, the step just taken
   std::size_t particles = 0;
   std::size_t contacts = 0;          // particle–particle contacts with overlap > 0
   std::size_t wall_contacts = 0;     // particle–wall contacts with overlap > 0
@@ -53,8 +56,10 @@ class Simulation {
   std::unique_ptr<Cohesion> cohesion;          // may be null (no adhesion)
   std::vector<std::unique_ptr<Module>> modules;
   Vec3 gravity{0, 0, -9.81};  // m/s2
-  double dt = 0;              // s
-  double time = 0;            // s
+  double dt = 0;              // s, of the step being taken (or last taken)
+  // When set, dt follows the particles present: decided before every step (time_step_control.hpp).
+  std::optional<TimeStepControl> step_control;
+  double time = 0;  // s
   std::uint64_t step_count = 0;
   std::uint64_t seed = 1;
   SimulationOptions options;

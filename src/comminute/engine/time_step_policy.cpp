@@ -33,6 +33,8 @@ TimeStepPolicy::Decision TimeStepPolicy::decide(Simulation& sim) const {
       if (lightest == nullptr || s.radius < lightest->radius) lightest = &s;
     }
   Decision d;
+  double dt_smallest = 0;  // s, the smallest step a following step can reach (0: fixed step)
+  sim.step_control.reset();
   if (given_ > 0) {
     d.dt = given_;
     d.note = fmt::format("time step {:.4g} s (set) = {:.1f} % of the Rayleigh time {:.4g} s", d.dt,
@@ -51,12 +53,21 @@ TimeStepPolicy::Decision TimeStepPolicy::decide(Simulation& sim) const {
     d.dt = fraction_ * t_inserted;
     d.note = fmt::format("time step {:.4g} s = {:.0f} % of the Rayleigh time {:.4g} s", d.dt,
                          100 * fraction_, t_inserted);
+    // Smaller particles can appear (fragments): the step follows the particles present, down to
+    // the smallest one announced, instead of being cut for it from the start.
+    const ParticleSize* smallest = nullptr;
     for (const auto& s : sizes)
-      if (s.announced && fraction_ * rayleigh(s) < d.dt) {
-        d.dt = fraction_ * rayleigh(s);
-        d.note += fmt::format("; lowered to {:.4g} s = {:.0f} % of the Rayleigh time of {}", d.dt,
-                              100 * fraction_, s.what);
-      }
+      if (s.announced && fraction_ * rayleigh(s) < d.dt &&
+          (smallest == nullptr || rayleigh(s) < rayleigh(*smallest)))
+        smallest = &s;
+    if (smallest != nullptr) {
+      sim.step_control.emplace(fraction_, d.dt);
+      dt_smallest = fraction_ * rayleigh(*smallest);
+      d.note += fmt::format(
+          "; follows the particles present: {:.0f} % of the Rayleigh time of the smallest, down "
+          "to {:.4g} s for {}",
+          100 * fraction_, fraction_ * rayleigh(*smallest), smallest->what);
+    }
   }
   if (lightest != nullptr) {  // the law's own limit for the lightest pair
     const Material& m = sim.materials.material(lightest->material);
@@ -73,10 +84,12 @@ TimeStepPolicy::Decision TimeStepPolicy::decide(Simulation& sim) const {
     table_.fail(key, fmt::format("the time step {:.4g} s exceeds the end time {:.4g} s: the run "
                                  "would take no step",
                                  d.dt, end_time_));
-  if (end_time_ / d.dt > max_steps)
+  // with a following step, the count at its smallest (a run of small fragments only)
+  const double dt_min = dt_smallest > 0 ? dt_smallest : d.dt;
+  if (end_time_ / dt_min > max_steps)
     table_.fail(key, fmt::format("end time {:.4g} s / time step {:.4g} s = {:.3g} steps, more than "
                                  "the limit of {:.0e} steps",
-                                 end_time_, d.dt, end_time_ / d.dt, max_steps));
+                                 end_time_, dt_min, end_time_ / dt_min, max_steps));
   sim.dt = d.dt;
   return d;
 }

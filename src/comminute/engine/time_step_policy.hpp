@@ -1,12 +1,15 @@
 #pragma once
-// The one place that sets the time step, once, before a run. Keys of [simulation]: time_step (s)
-// or time_step_fraction (-, default 0.2) of the smallest Rayleigh time (docs/models.md eq. R1)
-// among the particles the run can hold: the inserted ones, and those modules announce (breakage:
-// the smallest fragment each material can produce). A given time_step above 30 % of the Rayleigh
-// time is a warning for inserted particles and an error for announced ones (fragments are born
-// fast and overlapping). The contact law's own limit for the lightest inserted pair is checked
-// last (a warning). The run must take at least one step and at most max_steps: more is a mistake
-// (a time step in the wrong unit, an end time in ms); both are refused naming the key.
+// The one place that sets the time step, before a run. Keys of [simulation]: time_step (s), kept
+// for the whole run, or time_step_fraction (-, default 0.2) of the smallest Rayleigh time
+// (docs/models.md eq. R1) of the inserted particles. When a module announces smaller particles
+// (breakage: the smallest fragment each material can produce), the step is not cut for them up
+// front: the simulation gets a TimeStepControl that sets, before every step, the fraction of the
+// smallest Rayleigh time among the particles present (never above the inserted particles' step).
+// A given time_step above 30 % of the Rayleigh time is a warning for inserted particles and an
+// error for announced ones (fragments are born fast and overlapping). The contact law's own limit
+// for the lightest inserted pair is checked last (a warning). The run must take at least one step
+// and at most max_steps: more is a mistake (a time step in the wrong unit, an end time in ms); both
+// are refused naming the key.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -38,7 +41,8 @@ class TimeStepPolicy {
     std::string note;                   // how it was chosen
     std::vector<std::string> warnings;  // limits it exceeds
   };
-  // Collects the modules' announcements, decides and sets sim.dt. Throws InputError naming
+  // Collects the modules' announcements, decides and sets sim.dt (the first step) and
+  // sim.step_control (whether it follows the particles present). Throws InputError naming
   // [simulation] time_step when a given step cannot resolve an announced particle, or when the
   // step count is below one or above max_steps.
   Decision decide(Simulation& sim) const;

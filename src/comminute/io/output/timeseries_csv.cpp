@@ -30,6 +30,7 @@ TimeSeriesWriter::TimeSeriesWriter(std::filesystem::path path, std::vector<std::
 std::vector<Column> TimeSeriesWriter::columns(const std::vector<std::string>& wall_names) {
   std::vector<Column> c = {{"time", "s"},
                            {"step", "-"},
+                           {"time_step", "s"},
                            {"particles", "-"},
                            {"contacts", "-"},
                            {"wall_contacts", "-"},
@@ -60,6 +61,7 @@ void TimeSeriesWriter::append(const Observables& o,
                          o.elastic + l.damping + l.friction + l.removed - l.wall_work;
   std::vector<Cell> row = {o.time,
                            o.step,
+                           o.dt,
                            o.particles,
                            o.contacts,
                            o.wall_contacts,

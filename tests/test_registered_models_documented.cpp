@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "comminute/bonds/bond_law.hpp"
 #include "comminute/contact/cohesion.hpp"
 #include "comminute/contact/contact_law.hpp"
 #include "comminute/contact/rolling_resistance.hpp"
@@ -29,6 +30,7 @@ const Family kFamilies[] = {
     {"CohesionRegistry", &CohesionRegistry::names, "docs/case-file.md"},
     {"SizeDistributionRegistry", &SizeDistributionRegistry::names, "docs/case-file.md"},
     {"WallRegistry", &WallRegistry::names, "docs/case-file.md"},
+    {"BondLawRegistry", &bonds::BondLawRegistry::names, "docs/case-file.md"},
 };
 
 }  // namespace

@@ -165,45 +165,45 @@ TEST(BondLaws, ParallelBondFailsInTensionAtItsStrength) {
   EXPECT_NEAR(s.dissipated, 0.5 * kn * 1.0005e-3 * 1.0005e-3, 1e-12);
 }
 
+namespace {
+
+// Turns j relative to i about `axis` by steps of `dtheta` until the bond fails; returns the
+// angle reached and checks the moment k I θ on the way (k I: the bond's stiffness to it).
+double turn_until_failure(const BondLaw& law, BondState& s, const Vec3& axis, double dtheta,
+                          double k_inertia) {
+  double theta = 0;
+  while (s.failed == FailureMode::none) {
+    BondMotion m;
+    m.normal = {1, 0, 0};
+    m.length = 2.0;
+    m.rotation_increment = dtheta * axis;
+    const BondLoad load = law.update(s, m);
+    theta += dtheta;
+    if (s.failed == FailureMode::none) {
+      EXPECT_NEAR(dot(load.moment, axis), -k_inertia * theta, 1e-9 * k_inertia * theta);
+    }
+  }
+  return theta;
+}
+
+}  // namespace
+
 TEST(BondLaws, ParallelBondBendingAndTwistFailAtTheirStresses) {
   auto law = make_law("parallel_bond", kParallel);
   const double r = 0.5641895835477563, inertia = std::numbers::pi * std::pow(r, 4) / 4;
   const double kn = 1e6, ks = 4e5;
   // bending: M = kn I θ; σ = |M| R̄/I = kn R̄ θ reaches σ_c = 1e3 at θ = σ_c/(kn R̄)
-  {
-    BondState s = make_bond(*law);
-    const double theta_fail = 1e3 / (kn * r), dtheta = theta_fail / 1000.5;
-    double theta = 0;
-    while (s.failed == FailureMode::none) {
-      BondMotion m;
-      m.normal = {1, 0, 0};
-      m.length = 2.0;
-      m.rotation_increment = {0, dtheta, 0};
-      const BondLoad load = law->update(s, m);
-      theta += dtheta;
-      if (s.failed == FailureMode::none) {
-        EXPECT_NEAR(load.moment.y, -kn * inertia * theta, 1e-9 * kn * inertia * theta_fail);
-      }
-    }
-    EXPECT_EQ(s.failed, FailureMode::tensile);
-    EXPECT_NEAR(theta, theta_fail, dtheta);  // within the step that crossed it
-  }
-  // twist: τ = |M_n| R̄/J = ks R̄ θ reaches τ_c = 2e3 at θ = τ_c/(ks R̄)
-  {
-    BondState s = make_bond(*law);
-    const double theta_fail = 2e3 / (ks * r), dtheta = theta_fail / 1000.5;
-    double theta = 0;
-    while (s.failed == FailureMode::none) {
-      BondMotion m;
-      m.normal = {1, 0, 0};
-      m.length = 2.0;
-      m.rotation_increment = {dtheta, 0, 0};
-      law->update(s, m);
-      theta += dtheta;
-    }
-    EXPECT_EQ(s.failed, FailureMode::shear);
-    EXPECT_NEAR(theta, theta_fail, dtheta);
-  }
+  BondState bent = make_bond(*law);
+  const double bend_fail = 1e3 / (kn * r), dbend = bend_fail / 1000.5;
+  const double bend = turn_until_failure(*law, bent, {0, 1, 0}, dbend, kn * inertia);
+  EXPECT_EQ(bent.failed, FailureMode::tensile);
+  EXPECT_NEAR(bend, bend_fail, dbend);  // within the step that crossed it
+  // twist: M = ks J θ; τ = |M_n| R̄/J = ks R̄ θ reaches τ_c = 2e3 at θ = τ_c/(ks R̄)
+  BondState twisted = make_bond(*law);
+  const double twist_fail = 2e3 / (ks * r), dtwist = twist_fail / 1000.5;
+  const double twist = turn_until_failure(*law, twisted, {1, 0, 0}, dtwist, ks * 2 * inertia);
+  EXPECT_EQ(twisted.failed, FailureMode::shear);
+  EXPECT_NEAR(twist, twist_fail, dtwist);
 }
 
 TEST(BondLaws, ParallelBondStoredMomentTurnsWithTheBond) {

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <functional>
 #include <numbers>
+#include <utility>
 
 #include "comminute/bonds/bonds_module.hpp"
 #include "dem_fixture.hpp"
@@ -141,7 +142,6 @@ std::unique_ptr<Simulation> pulled_pair(const std::string& law, const std::strin
   add_sphere(*sim, {0, 0, 0}, r, {-v, 0, 0});
   add_sphere(*sim, {2 * r + 1e-9, 0, 0}, r, {v, 0, 0});
   *module = add_bonds(*sim, law, keys, 1e-6);
-  sim->dt = 1e-8;
   sim->options.skin = 1e-4;
   return sim;
 }
@@ -153,23 +153,40 @@ double balance(const Simulation& sim) {
          l.friction + l.removed + l.bond_dissipated - l.wall_work;
 }
 
+// The pair pulled apart for 2000 steps: the largest departure of the balance from its start
+// and the most strain energy the bonds held.
+struct Pulled {
+  std::unique_ptr<Simulation> sim;
+  bonds::BondsModule* module = nullptr;
+  double e0 = 0, worst = 0, max_elastic = 0;
+};
+
+Pulled pull_apart(const std::string& law, const std::string& keys, double v, double dt) {
+  Pulled r;
+  r.sim = pulled_pair(law, keys, v, &r.module);
+  r.sim->dt = dt;
+  r.sim->setup();
+  r.e0 = balance(*r.sim);
+  for (int k = 0; k < 2000; ++k) {
+    r.sim->step();
+    r.worst = std::max(r.worst, std::abs(balance(*r.sim) - r.e0));
+    r.max_elastic = std::max(r.max_elastic, r.sim->ledger.bond_elastic);
+  }
+  return r;
+}
+
 }  // namespace
 
 TEST(BondsEngine, EnergyLedgerClosesWhenCohesiveBondBreaks) {
-  bonds::BondsModule* module = nullptr;
   // K A = 1e12 π 1e-6 = 3.1e6 N/m; G_Ic A = 10 π 1e-6 = 3.1e-5 J < the kinetic energy 9.4e-5 J
-  auto sim = pulled_pair("bilinear_cohesive",
-                         "penalty_stiffness = 1e12\nnormal_strength = 1e6\nshear_strength = 1e6\n"
-                         "mode_I_toughness = 10\nmode_II_toughness = 20\nbk_exponent = 2\n",
-                         3.0, &module);
-  sim->setup();
-  const double e0 = balance(*sim);
-  double worst = 0, max_elastic = 0;
-  for (int k = 0; k < 2000; ++k) {
-    sim->step();
-    worst = std::max(worst, std::abs(balance(*sim) - e0));
-    max_elastic = std::max(max_elastic, sim->ledger.bond_elastic);
-  }
+  const Pulled r =
+      pull_apart("bilinear_cohesive",
+                 "penalty_stiffness = 1e12\nnormal_strength = 1e6\nshear_strength = 1e6\n"
+                 "mode_I_toughness = 10\nmode_II_toughness = 20\nbk_exponent = 2\n",
+                 3.0, 1e-8);
+  const auto& module = r.module;
+  const auto& sim = r.sim;
+  const double e0 = r.e0, worst = r.worst, max_elastic = r.max_elastic;
   ASSERT_EQ(module->failures().size(), 1u);
   EXPECT_EQ(module->failures()[0].cause, bonds::FailureCause::tensile);
   const double GA = 10 * std::numbers::pi * 1e-6;
@@ -186,21 +203,15 @@ TEST(BondsEngine, EnergyLedgerClosesWhenCohesiveBondBreaks) {
 }
 
 TEST(BondsEngine, EnergyLedgerClosesWhenParallelBondBreaks) {
-  bonds::BondsModule* module = nullptr;
   // k̄n A = 3.1e6 N/m; fails at δ = σ̄c / k̄n = 1e-5 m, releasing ½ k̄n A δ² = 1.6e-4 J of the
   // kinetic energy m v² = 1.05e-3 J
-  auto sim = pulled_pair("parallel_bond",
-                         "normal_stiffness = 1e12\nshear_stiffness = 4e11\n"
-                         "tensile_strength = 1e7\nshear_strength = 1e7\n",
-                         10.0, &module);
-  sim->dt = 2e-9;
-  sim->setup();
-  const double e0 = balance(*sim);
-  double worst = 0;
-  for (int k = 0; k < 2000; ++k) {
-    sim->step();
-    worst = std::max(worst, std::abs(balance(*sim) - e0));
-  }
+  const Pulled r = pull_apart("parallel_bond",
+                              "normal_stiffness = 1e12\nshear_stiffness = 4e11\n"
+                              "tensile_strength = 1e7\nshear_strength = 1e7\n",
+                              10.0, 2e-9);
+  const auto& module = r.module;
+  const auto& sim = r.sim;
+  const double e0 = r.e0, worst = r.worst;
   ASSERT_EQ(module->failures().size(), 1u);
   const double released = 0.5 * 1e12 * std::numbers::pi * 1e-6 * 1e-5 * 1e-5;
   // the strain energy at failure, ∝ δ²: the failing step opens at most 2 v dt = 4e-8 m past

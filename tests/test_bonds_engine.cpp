@@ -103,8 +103,7 @@ TEST(BondsEngine, BondedCantileverDeflectsAsEulerBernoulli) {
   EXPECT_NEAR(-tip_z, expected, 0.05 * expected) << "EB " << expected << " m";
   // at rest: the tip's speed has decayed to nothing
   EXPECT_LT(norm(c.sim->particles.v[slot_of(*c.sim, c.tip)]), 1e-6 * expected / 5e-6);
-  RecordProperty("tip_deflection", std::to_string(-tip_z));
-  RecordProperty("euler_bernoulli", std::to_string(expected));
+  RecordProperty("deflection_over_euler_bernoulli", std::to_string(-tip_z / expected));
 }
 
 TEST(BondsEngine, CantileverRootBondFailsAtTheCriterionLoad) {
@@ -199,7 +198,8 @@ TEST(BondsEngine, EnergyLedgerClosesWhenCohesiveBondBreaks) {
   // the balance holds to the integration error of velocity Verlet over the ~330 steps of the
   // bond's life (second order: below 1e-4 of the energy moved through the bond)
   EXPECT_LT(worst, 1e-4 * e0) << "worst drift " << worst << " J of " << e0 << " J";
-  RecordProperty("worst_balance_drift_J", std::to_string(worst));
+  RecordProperty("worst_balance_drift_over_energy", std::to_string(worst / e0));
+  RecordProperty("dissipated_over_GA", std::to_string(sim->ledger.bond_dissipated / GA));
 }
 
 TEST(BondsEngine, EnergyLedgerClosesWhenParallelBondBreaks) {

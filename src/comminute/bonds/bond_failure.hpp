@@ -16,6 +16,7 @@ struct BondFailure {
   Vec3 position;      // m, the bond's contact point when it failed
   double energy = 0;  // J, dissipated by the bond over its life (damage + release)
   FailureCause cause = FailureCause::tensile;
+  std::uint8_t padding[7] = {};  // written to checkpoints: no undefined bytes
 };
 
 const char* cause_name(FailureCause c);

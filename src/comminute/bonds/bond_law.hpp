@@ -32,6 +32,7 @@ struct BondState {
   double dissipated = 0;        // J, dissipated by this bond so far (damage, release at failure)
   double strain_energy = 0;     // J, held now
   FailureMode failed = FailureMode::none;
+  std::uint8_t padding[7] = {};  // written to checkpoints: no undefined bytes
 };
 
 // The motion of the two particles over one step, as the bond sees it.

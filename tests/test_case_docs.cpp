@@ -11,8 +11,10 @@ using namespace comminute;
 TEST(CaseDocs, EveryKeyOfTheDemExamplesIsDocumented) {
   const std::string doc = comminute::testing::read_source_file("docs/case-file.md");
   ASSERT_FALSE(doc.empty());
-  for (const char* name : {"/examples/settle/settle.toml", "/examples/drum/rotating_drum.toml",
-                           "/examples/piston/confined_compression.toml"}) {
+  for (const char* name :
+       {"/examples/settle/settle.toml", "/examples/drum/rotating_drum.toml",
+        "/examples/piston/confined_compression.toml", "/examples/machines/servo_compression.toml",
+        "/examples/machines/discharge.toml", "/examples/periodic/drum_slice.toml"}) {
     CaseFile f = CaseFile::load(std::string(COMMINUTE_SOURCE_DIR) + name);
     io::build_dem_case(f.root());
     if (auto o = f.root().optional_table("output")) io::read_output_options(*o);

@@ -17,7 +17,7 @@ void BondList::add(std::uint64_t a, std::uint32_t sa, std::uint64_t b, std::uint
 }
 
 std::vector<std::size_t> BondList::locate(const ParticleStore& p) {
-  const std::size_t n = p.size();
+  const std::size_t n = p.owned();  // ghosts (periodic images) are never bonded
   auto valid = [&](std::uint32_t slot, std::uint64_t id) { return slot < n && p.id[slot] == id; };
   bool stale = false;
   for (std::size_t b = 0; b < size() && !stale; ++b)

@@ -41,6 +41,7 @@ void BondsModule::create_bonds(Simulation& sim) {
   std::vector<std::tuple<std::uint64_t, std::uint64_t, std::uint32_t, std::uint32_t>> found;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     std::uint32_t i = pairs.first[k], j = pairs.second[k];
+    if (i >= p.owned() || j >= p.owned()) continue;  // a periodic image: not bonded
     if (!selected(i) || !selected(j)) continue;
     const double gap = norm(p.x[j] - p.x[i]) - p.radius[i] - p.radius[j];
     if (gap > options_.gap_tolerance) continue;

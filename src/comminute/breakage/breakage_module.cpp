@@ -68,7 +68,7 @@ void BreakageModule::post_force(Simulation& sim) {
   if (growth_.pending() > 0) growth_.grow(sim, fields_.target, ledger_);
   events_.gather_loads(sim);
   auto& p = sim.particles;
-  for (std::size_t i = 0; i < p.size(); ++i)  // particles inserted by other modules draw strength
+  for (std::size_t i = 0; i < p.owned(); ++i)  // particles inserted by other modules draw strength
     if (p.field(fields_.initialized)[i] == 0) initialize_particle(sim, i);
   events_.assess(sim, materials_, fields_, log_,
                  [&](std::size_t i, const EventRecord& r) { replacement_.enqueue(p.id[i], r); });

@@ -44,6 +44,9 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
         }
       },
       [](double a, double b) { return std::min(a, b); });
+  // a ghost's neighbours bound its owner's growth (periodic boundaries)
+  for (std::size_t s = p.owned(); s < n; ++s)
+    limit[p.owner_of(s)] = std::min(limit[p.owner_of(s)], limit[s]);
   const std::vector<double> r_before = p.radius;
   // Growth at fixed positions raises the overlaps of the growing spheres: that elastic energy
   // comes from nowhere, so it is booked (as negative removed energy) to keep the balance closed.
@@ -54,7 +57,7 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
   };
   std::vector<GrowthTally> tally(1);
   parallel_scatter(
-      n, tally, GrowthTally{},
+      p.owned(), tally, GrowthTally{},
       [&](std::size_t i, std::vector<GrowthTally>& acc) {
         // blocked by a neighbour already: no growth this step (spares the wall look-ups)
         if (!(p.flags[i] & pflag::growing) || limit[i] <= p.radius[i]) return;
@@ -97,6 +100,7 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
                            a.rebuild || b.rebuild};
       });
   pending_ -= tally[0].completed;
+  for (std::size_t s = p.owned(); s < n; ++s) p.radius[s] = p.radius[p.owner_of(s)];  // ghosts
   std::vector<double> pair_energy(1, 0.0);  // J, summed per thread
   parallel_scatter(
       nl.size(), pair_energy, 0.0,

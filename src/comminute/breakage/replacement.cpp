@@ -23,16 +23,19 @@ void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
         slot_of[p.id[i]] = i;
         is_parent[i] = 1;
       }
-    std::unordered_map<std::size_t, std::vector<std::uint32_t>> around;
+    std::unordered_map<std::size_t, std::vector<Neighbour>> around;
     const auto& nl = sim.pairs();
     for (std::size_t k = 0; k < nl.size(); ++k) {
-      const std::uint32_t i = nl.first[k], j = nl.second[k];
+      // a slot of the list may be a periodic ghost (no longer in the store): its owner stands in
+      const std::uint32_t si = nl.first[k], sj = nl.second[k];
+      const auto i = static_cast<std::uint32_t>(sim.slot_owner(si)),
+                 j = static_cast<std::uint32_t>(sim.slot_owner(sj));
       const bool bi = is_parent[i] != 0, bj = is_parent[j] != 0;
       if (!bi && !bj) continue;
-      if (bi) around[i].push_back(j);
-      if (bj) around[j].push_back(i);
+      if (bi) around[i].push_back({j, si, sj});
+      if (bj) around[j].push_back({i, sj, si});
       if (sim.pair_state().active[k]) {  // elastic energy that leaves with the parent's contacts
-        const Vec3 dx = p.x[i] - p.x[j];
+        const Vec3 dx = sim.slot_position(si) - sim.slot_position(sj);
         const double dist = norm(dx);
         const double ov = p.radius[i] + p.radius[j] - dist;
         if (ov > 0 && dist > 0) {
@@ -60,7 +63,9 @@ void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
         }
     }
     for (std::size_t b = 0; b < broken_ids_.size(); ++b) {
-      const std::size_t i = slot_of.at(broken_ids_[b]);
+      const auto found_parent = slot_of.find(broken_ids_[b]);
+      if (found_parent == slot_of.end()) continue;  // left through an outlet while it waited
+      const std::size_t i = found_parent->second;
       replace(sim, ctx, i, around[i], broken_records_[b]);
     }
     p.compact();
@@ -73,10 +78,12 @@ void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
 }
 
 void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t parent,
-                          const std::vector<std::uint32_t>& around, const EventRecord& rec_in) {
+                          const std::vector<Neighbour>& around, const EventRecord& rec_in) {
   auto& p = sim.particles;
   std::vector<Sphere> neighbours;
-  for (std::uint32_t j : around) neighbours.push_back({p.x[j], p.radius[j]});
+  for (const Neighbour& nb : around)
+    neighbours.push_back(
+        {sim.pair_frame(nb.parent_seen, nb.seen, p.x[nb.slot]), p.radius[nb.slot]});
   const MaterialBreakage& mat = *ctx.materials[p.material[parent]];
   EventRecord rec = rec_in;
   // A fragment that breaks while still growing counts at its final size.
@@ -164,11 +171,13 @@ void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t paren
     for (std::size_t b = a + 1; b < p.size(); ++b)
       created += overlap_energy(sim, p.radius[a] + p.radius[b] - norm(p.x[a] - p.x[b]), p.radius[a],
                                 p.mass[a], material, p.radius[b], p.mass[b], material);
-    auto with = [&](std::size_t j) {
-      created += overlap_energy(sim, p.radius[a] + p.radius[j] - norm(p.x[a] - p.x[j]), p.radius[a],
-                                p.mass[a], material, p.radius[j], p.mass[j], p.material[j]);
-    };
-    for (std::uint32_t j : around) {
+    for (const Neighbour& nb : around) {
+      auto with = [&](std::size_t j) {  // j, or one of its fragments, seen from the parent
+        const Vec3 xj = sim.pair_frame(nb.parent_seen, nb.seen, p.x[j]);
+        created += overlap_energy(sim, p.radius[a] + p.radius[j] - norm(p.x[a] - xj), p.radius[a],
+                                  p.mass[a], material, p.radius[j], p.mass[j], p.material[j]);
+      };
+      const std::uint32_t j = nb.slot;
       if (!(p.flags[j] & pflag::remove)) {
         with(j);
         continue;

@@ -50,8 +50,13 @@ class Replacement {
   void end_of_step(Simulation& sim, const Context& ctx);
 
  private:
+  // A neighbour of a parent: its owned slot, and the pair-list slots (parent's, its own) of the
+  // pair that met them — a periodic image when one of them is a ghost (Simulation::pair_frame).
+  struct Neighbour {
+    std::uint32_t slot, parent_seen, seen;
+  };
   void replace(Simulation& sim, const Context& ctx, std::size_t parent,
-               const std::vector<std::uint32_t>& around, const EventRecord& rec);
+               const std::vector<Neighbour>& around, const EventRecord& rec);
 
   std::shared_ptr<const FragmentPlacement> placement_;
   int interval_;

@@ -56,6 +56,12 @@ void StressingEvents::gather_loads(const Simulation& sim) {
       [](ContactLoad x, const ContactLoad& y) {
         return ContactLoad{x.work + y.work, x.force + y.force};
       });
+  // a ghost's contacts load its owner (periodic boundaries)
+  for (std::size_t s = p.owned(); s < n; ++s) {
+    ContactLoad& o = contact_load_[p.owner_of(s)];
+    o.work += contact_load_[s].work;
+    o.force += contact_load_[s].force;
+  }
   for (const auto& c : sim.wall_contacts()) {
     const std::size_t a = p.material[c.particle], b = sim.walls[c.wall]->material;
     const StateRef h = sim.wall_state().at(c.candidate);
@@ -67,7 +73,7 @@ void StressingEvents::gather_loads(const Simulation& sim) {
 void StressingEvents::assess(Simulation& sim, const BreakageMaterials& materials,
                              const BreakageFields& f, EventLog& log, const BrokeFn& on_break) {
   auto& p = sim.particles;
-  const std::size_t n = p.size();
+  const std::size_t n = p.owned();  // ghosts are assessed through their owners
   auto& in_event = p.field(f_in_event_);
   auto& energy = p.field(f_energy_);
   auto& force = p.field(f_force_);

@@ -83,6 +83,12 @@ class ContactStateStore {
   StateRef at(std::size_t k) const { return {&slots_, k}; }
   // Zeroes every slot of contact k and marks it inactive (the bodies separated).
   void clear(std::size_t k);
+  // Maps every vector slot of contact k by f: a contact carried to a rotated periodic image (a
+  // sector) turns its springs with it. Every vec3 slot is a vector in the global frame.
+  template <class F>
+  void map_vectors(std::size_t k, F f) {
+    for (auto& c : vec3_) c.data[k] = f(c.data[k]);
+  }
   // A new list of `size` contacts, all fresh, but for the carried ones: contact to[e] takes the
   // slots of old contact from[e] (transformed by each slot's rule when reversed[e]) and is active.
   void carry(const std::vector<std::uint32_t>& from, const std::vector<std::uint32_t>& to,

@@ -9,8 +9,9 @@ namespace comminute {
 
 double VelocityVerlet::kick_drift(ParticleStore& p, double dt, const Vec3& gravity,
                                   const std::vector<Vec3>& x_build) {
-  const std::size_t n = p.size();
-  const bool track = x_build.size() == n;
+  const std::size_t n = p.owned();
+  // (the build positions also hold the ghosts of a periodic run, after the owned particles)
+  const bool track = x_build.size() >= n;
   const double h = 0.5 * dt;
   const Vec3 g = gravity;
   double worst = 0;
@@ -29,7 +30,7 @@ double VelocityVerlet::kick_drift(ParticleStore& p, double dt, const Vec3& gravi
 }
 
 bool VelocityVerlet::kick(ParticleStore& p, double dt) {
-  const std::size_t n = p.size();
+  const std::size_t n = p.owned();
   const double h = 0.5 * dt;
   bool bad = false;
 #pragma omp parallel for schedule(static) reduction(|| : bad) if (n >= kParallelMin)
@@ -44,7 +45,7 @@ bool VelocityVerlet::kick(ParticleStore& p, double dt) {
 }
 
 void VelocityVerlet::start_forces(ParticleStore& p, const Vec3& gravity) {
-  const std::size_t n = p.size();
+  const std::size_t n = p.owned();  // ghosts start from zero: their owners carry the gravity
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     p.f[i] = p.mass[i] * gravity;

@@ -10,14 +10,15 @@ namespace comminute {
 
 class VelocityVerlet {
  public:
-  // First half kick and drift of every free particle, and the start of the force sum (gravity,
-  // zero torque) in the same pass. Returns the largest |x - x_build|^2 (m2) when `x_build` holds
-  // a position per particle, else infinity (the caller then rebuilds).
+  // First half kick and drift of every free owned particle (ghosts follow their owners), and the
+  // start of the force sum (gravity, zero torque) in the same pass. Returns the largest
+  // |x - x_build|^2 (m2) when `x_build` holds a position per owned particle, else infinity (the
+  // caller then rebuilds).
   static double kick_drift(ParticleStore& p, double dt, const Vec3& gravity,
                            const std::vector<Vec3>& x_build);
-  // Second half kick; true when some particle's state became non-finite.
+  // Second half kick of the owned particles; true when some particle's state became non-finite.
   static bool kick(ParticleStore& p, double dt);
-  // Sets every force to the particle's weight and every torque to zero.
+  // Sets every owned particle's force to its weight and its torque to zero.
   static void start_forces(ParticleStore& p, const Vec3& gravity);
 };
 

@@ -12,7 +12,14 @@
 namespace comminute {
 
 bool PairTracker::update(ParticleStore& p, const Walls& walls, SimulationOptions& options,
-                         ContactStateStore& pair_state, ContactStateStore& wall_state) {
+                         ContactStateStore& pair_state, ContactStateStore& wall_state,
+                         const std::vector<std::uint64_t>* labels) {
+  if (!due(p, options)) return false;
+  rebuild(p, walls, options, pair_state, wall_state, labels);
+  return true;
+}
+
+bool PairTracker::due(const ParticleStore& p, const SimulationOptions& options) {
   if (!stale_) {
     double travel = 0;
     for (double t : wall_travel_) travel = std::max(travel, t);
@@ -22,13 +29,10 @@ bool PairTracker::update(ParticleStore& p, const Walls& walls, SimulationOptions
     const double limit = 0.5 * options.skin;
     if (reach > limit || travel > limit) stale_ = true;
   }
-  if (!stale_) return false;
-  rebuild(p, walls, options, pair_state, wall_state);
-  return true;
+  return stale_;
 }
 
-void PairTracker::rebuild(ParticleStore& p, const Walls& walls, SimulationOptions& options,
-                          ContactStateStore& pair_state, ContactStateStore& wall_state) {
+void PairTracker::prepare(ParticleStore& p, SimulationOptions& options) const {
   if (options.skin <= 0 && !p.empty()) {
     double mean = 0;
     for (double r : p.radius) mean += 2 * r;
@@ -40,13 +44,19 @@ void PairTracker::rebuild(ParticleStore& p, const Walls& walls, SimulationOption
     auto order = NeighborList::cell_order(p, 2 * rmax + options.skin);
     p.permute(order);
   }
-  nlist_.build(p, options.skin, pair_state.active);
+}
+
+void PairTracker::rebuild(ParticleStore& p, const Walls& walls, SimulationOptions& options,
+                          ContactStateStore& pair_state, ContactStateStore& wall_state,
+                          const std::vector<std::uint64_t>* labels) {
+  if (!labels) prepare(p, options);
+  nlist_.build(p, options.skin, pair_state.active, labels);
   const auto& carried = nlist_.carried();
   pair_state.carry(carried.from, carried.to, carried.reversed, nlist_.size());
   x_at_build_ = p.x;
   r_at_build_ = p.radius;
   reach_tracked_.clear();
-  for (std::size_t i = 0; i < p.size(); ++i)
+  for (std::size_t i = 0; i < p.owned(); ++i)
     if (p.flags[i] & pflag::growing) reach_tracked_.push_back(static_cast<std::uint32_t>(i));
   build_wall_candidates(p, walls, options.skin, wall_state);
   stale_ = false;
@@ -85,7 +95,7 @@ void PairTracker::build_wall_candidates(const ParticleStore& p, const Walls& wal
   for (std::uint32_t w = 0; w < walls.size(); ++w) {
     wall_full_scan_[w] =
         walls[w]->surface_moves() && norm2(walls[w]->kinematics.angular_velocity) > 0;
-    for (std::uint32_t i = 0; i < p.size(); ++i) {
+    for (std::uint32_t i = 0; i < p.owned(); ++i) {  // ghosts: their owners meet the walls
       const std::size_t from = fresh.size();
       add_wall_candidates(p, walls, i, w, p.x[i], p.radius[i], skin, found, fresh);
       for (std::size_t k = from; k < fresh.size(); ++k) {
@@ -176,6 +186,7 @@ void PairTracker::save(Archive& a) const {
   a.put("pairs/first", nlist_.first);
   a.put("pairs/second", nlist_.second);
   a.put("pairs/ids", nlist_.ids_at_build());
+  a.put("pairs/labels", nlist_.labels_at_build());
   a.put("pairs/large", nlist_.large());
   a.put("pairs/x_at_build", x_at_build_);
   a.put("pairs/r_at_build", r_at_build_);
@@ -194,7 +205,8 @@ namespace {
 }
 }  // namespace
 
-void PairTracker::load(const Archive& a, const ParticleStore& p, double skin) {
+void PairTracker::load(const Archive& a, const ParticleStore& p, double skin,
+                       std::size_t n_ghosts) {
   // Everything is checked before it is used: a crafted or mixed-up checkpoint must not index out
   // of range. The lists describe the particles at the last build (n_build of them); while they
   // are current (not stale) that is the particle count.
@@ -202,6 +214,9 @@ void PairTracker::load(const Archive& a, const ParticleStore& p, double skin) {
   auto second = a.get<std::uint32_t>("pairs/second");
   auto ids = a.get<std::uint64_t>("pairs/ids");
   auto large = a.get<std::uint8_t>("pairs/large");
+  // (absent from checkpoints written before periodic boundaries: no labels)
+  auto labels =
+      a.has("pairs/labels") ? a.get<std::uint64_t>("pairs/labels") : std::vector<std::uint64_t>{};
   auto x_build = a.get<Vec3>("pairs/x_at_build");
   auto r_build = a.get<double>("pairs/r_at_build");
   auto tracked = a.get<std::uint32_t>("pairs/reach_tracked");
@@ -210,8 +225,12 @@ void PairTracker::load(const Archive& a, const ParticleStore& p, double skin) {
   auto full_scan = a.get<std::uint8_t>("walls/full_scan");
   const bool stale = a.get_value<std::uint8_t>("sim/need_rebuild") != 0;
   const std::size_t n_build = ids.size();
-  if (!stale && n_build != p.size())
-    corrupt("pairs/ids", fmt::format("holds {} particles, the checkpoint {}", n_build, p.size()));
+  if (!stale && n_build != p.size() + n_ghosts)
+    corrupt("pairs/ids", fmt::format("holds {} particles, the checkpoint {} and {} ghosts", n_build,
+                                     p.size(), n_ghosts));
+  if (!labels.empty() && labels.size() != n_build)
+    corrupt("pairs/labels",
+            fmt::format("holds {} labels for {} particles", labels.size(), n_build));
   if (second.size() != first.size())
     corrupt("pairs/second",
             fmt::format("holds {} pairs, 'pairs/first' {}", second.size(), first.size()));
@@ -244,7 +263,8 @@ void PairTracker::load(const Archive& a, const ParticleStore& p, double skin) {
     if (!std::isfinite(d)) corrupt("walls/travel", "is not finite");
   const double disp2 = a.get_value<double>("sim/max_disp2");
   if (!std::isfinite(disp2) || disp2 < 0) corrupt("sim/max_disp2", "is not a finite distance");
-  nlist_.restore(std::move(first), std::move(second), std::move(ids), std::move(large));
+  nlist_.restore(std::move(first), std::move(second), std::move(ids), std::move(large),
+                 std::move(labels));
   x_at_build_ = std::move(x_build);
   r_at_build_ = std::move(r_build);
   reach_tracked_ = std::move(tracked);

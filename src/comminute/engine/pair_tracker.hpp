@@ -41,11 +41,19 @@ class PairTracker {
   // wall k moved this step (m).
   void moved(double max_displacement2) { max_disp2_ = max_displacement2; }
   void wall_moved(std::size_t k, double distance) { wall_travel_[k] += distance; }
-  // Rebuilds the lists when they are stale or some reach changed by more than skin/2 (sorting the
-  // particles by cell every options.sort_every rebuilds; setting a zero skin from the particles);
-  // the contact state follows. Returns true when it rebuilt.
+  // Whether the lists must be rebuilt before the next force computation: they are stale or some
+  // reach changed by more than skin/2 (marks them stale).
+  bool due(const ParticleStore& p, const SimulationOptions& options);
+  // Before a rebuild: sets a zero skin from the particles and sorts them by cell every
+  // options.sort_every rebuilds. update() calls it unless the store holds ghosts (periodic runs
+  // call it before their ghosts are made).
+  void prepare(ParticleStore& p, SimulationOptions& options) const;
+  // Rebuilds the lists when due(); the contact state follows. Returns true when it rebuilt. With
+  // periodic boundaries, `labels` holds each slot's image label (the store holds its ghosts, and
+  // prepare() has run): the carry follows pairs across wraps and ghost rebuilds.
   bool update(ParticleStore& p, const Walls& walls, SimulationOptions& options,
-              ContactStateStore& pair_state, ContactStateStore& wall_state);
+              ContactStateStore& pair_state, ContactStateStore& wall_state,
+              const std::vector<std::uint64_t>* labels = nullptr);
   // After compact() removed parents and their fragments were appended: updates both lists in
   // place. Each fragment gets every partner within skin of its sphere at its final radius, so the
   // skin/2 trigger stays exact and growth needs no rebuild. False when that is not possible (the
@@ -62,12 +70,14 @@ class PairTracker {
   std::uint64_t rebuilds() const { return rebuilds_; }
 
   void save(Archive& a) const;
-  // Needs the particles already loaded (to re-create the reach index) and the skin.
-  void load(const Archive& a, const ParticleStore& p, double skin);
+  // Needs the particles already loaded (to re-create the reach index), the skin and the number of
+  // ghosts the lists were built with (periodic runs; ghosts are not in the store between steps).
+  void load(const Archive& a, const ParticleStore& p, double skin, std::size_t n_ghosts = 0);
 
  private:
   void rebuild(ParticleStore& p, const Walls& walls, SimulationOptions& options,
-               ContactStateStore& pair_state, ContactStateStore& wall_state);
+               ContactStateStore& pair_state, ContactStateStore& wall_state,
+               const std::vector<std::uint64_t>* labels);
   void build_wall_candidates(const ParticleStore& p, const Walls& walls, double skin,
                              ContactStateStore& wall_state);
   void add_wall_candidates(const ParticleStore& p, const Walls& walls, std::uint32_t i,

@@ -32,10 +32,12 @@ void Simulation::setup() {
   if (!(dt > 0)) throw Error("simulation time step is not set");
   assemble_contacts();
   flush_denormals_to_zero();
+  if (ghosts_.active()) ghosts_.attach(particles);
   for (auto& m : modules) m->setup(*this);
   is_setup_ = true;
   tracker_.invalidate();
   compute_forces();
+  particles.drop_ghosts();
 }
 
 void Simulation::run(std::uint64_t n) {
@@ -54,6 +56,7 @@ void Simulation::step() {
   for (auto& m : modules) m->pre_force(*this);
   compute_forces();
   for (auto& m : modules) m->post_force(*this);
+  particles.drop_ghosts();
   const bool bad = VelocityVerlet::kick(particles, dt);
   ++step_count;
   if (bad) report_non_finite();
@@ -74,6 +77,10 @@ void Simulation::report_non_finite() const {
 }
 
 void Simulation::particles_replaced(const std::vector<NewFragment>& fragments) {
+  if (ghosts_.active()) {  // the ghosts are planned anew from the fragments at a rebuild
+    particles_changed();
+    return;
+  }
   if (tracker_.replace(particles, walls, options.skin, fragments, pair_state_, wall_state_))
     forces_cleared_ = false;
   else
@@ -84,8 +91,37 @@ double Simulation::reach_margin(std::size_t i) const {
   return tracker_.reach_margin(particles, i, options.skin);
 }
 
+std::size_t Simulation::slot_owner(std::size_t slot) const {
+  const bool ghost = slot >= n_owned_ && slot - n_owned_ < ghosts_.size();
+  return ghost ? ghosts_.owner(slot - n_owned_) : slot;
+}
+
+Vec3 Simulation::slot_position(std::size_t slot) const {
+  return ghosts_.position(particles, slot, n_owned_);
+}
+
+Vec3 Simulation::to_owner_frame(std::size_t slot, const Vec3& x) const {
+  return ghosts_.to_owner_frame(slot, n_owned_, x);
+}
+
+Vec3 Simulation::pair_frame(std::size_t from, std::size_t seen, const Vec3& x) const {
+  return ghosts_.to_owner_frame(from, n_owned_, ghosts_.from_owner_frame(seen, n_owned_, x));
+}
+
 void Simulation::compute_forces() {
-  tracker_.update(particles, walls, options, pair_state_, wall_state_);
+  const std::vector<std::uint64_t>* labels = nullptr;
+  if (ghosts_.active()) {
+    if (tracker_.due(particles, options)) {  // wrap and plan the ghosts anew (docs/models.md)
+      tracker_.prepare(particles, options);
+      ghosts_.wrap(particles);
+      ghosts_.plan(particles, options.skin);
+    }
+    ghosts_.append(particles);
+    labels = &ghosts_.labels(particles);
+  }
+  n_owned_ = particles.owned();
+  const bool rebuilt = tracker_.update(particles, walls, options, pair_state_, wall_state_, labels);
+  if (rebuilt && ghosts_.active()) ghosts_.turn_carried(tracker_.pairs().carried(), pair_state_);
   if (!forces_cleared_)  // set-up, or particles inserted/removed after the drift
     VelocityVerlet::start_forces(particles, gravity);
   forces_cleared_ = false;
@@ -98,6 +134,7 @@ void Simulation::compute_forces() {
                  elastic_energy_);
   wall_loop_.run(particles, materials, walls, tracker_.wall_candidates(), contacts_, wall_state_,
                  dt, ledger, elastic_energy_, wall_contacts_);
+  if (ghosts_.active()) ghosts_.fold(particles);
 }
 
 Observables Simulation::observe() const {
@@ -132,6 +169,7 @@ void Simulation::save(Archive& a) const {
   a.put("particles/material", p.material);
   a.put("particles/flags", p.flags);
   a.put_value("particles/next_id", p.next_id());
+  if (ghosts_.active()) ghosts_.save(a);
   for (std::size_t k = 0; k < p.field_names().size(); ++k)
     a.put("fields/" + p.field_names()[k], p.field(k));
   tracker_.save(a);
@@ -209,6 +247,8 @@ void Simulation::load(const Archive& a) {
   p.material = a.get<std::uint16_t>("particles/material");
   p.flags = a.get<std::uint32_t>("particles/flags");
   p.set_next_id(a.get_value<std::uint64_t>("particles/next_id"));
+  p.ghost_owner.clear();
+  if (ghosts_.active()) ghosts_.attach(p);  // its image labels are fields
   for (std::size_t k = 0; k < p.field_names().size(); ++k)
     p.field(k) = a.get<double>("fields/" + p.field_names()[k]);
   validate_loaded_particles(p, materials.size());
@@ -220,7 +260,9 @@ void Simulation::load(const Archive& a) {
   if (travel != walls.size() && !(travel == 0 && a.get_value<std::uint8_t>("sim/need_rebuild")))
     throw Error(fmt::format("checkpoint entry 'walls/travel' holds {} walls, the case {}", travel,
                             walls.size()));
-  tracker_.load(a, p, options.skin);
+  if (ghosts_.active()) ghosts_.load(a, p.size());
+  n_owned_ = p.size();
+  tracker_.load(a, p, options.skin, ghosts_.size());
   pair_state_.load(a, "pairs/state/", tracker_.pairs().size());
   wall_state_.load(a, "walls/state/", tracker_.wall_candidates().size());
   for (std::size_t k = 0; k < walls.size(); ++k) {

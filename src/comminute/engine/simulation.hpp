@@ -14,6 +14,7 @@
 #include "comminute/contact/rolling_resistance.hpp"
 #include "comminute/engine/contact_pipeline.hpp"
 #include "comminute/engine/energy_tally.hpp"
+#include "comminute/engine/ghost_exchange.hpp"
 #include "comminute/engine/module.hpp"
 #include "comminute/engine/pair_force_loop.hpp"
 #include "comminute/engine/pair_tracker.hpp"
@@ -58,6 +59,21 @@ class Simulation {
   std::uint64_t seed = 1;
   SimulationOptions options;
   EnergyLedger ledger;
+
+  // Periodic boundaries (geometry/periodic_map.hpp): set before setup() or load(). Ghosts are in
+  // the store from the force computation to the modules' post_force (ParticleStore::owned()).
+  void set_periodic(const PeriodicMap& map) { ghosts_.map = map; }
+  const PeriodicMap& periodic() const { return ghosts_.map; }
+  std::size_t ghost_count() const { return ghosts_.size(); }
+  // The owned particle a slot of the pair list stands for, where that slot is, and a point seen
+  // from the slot brought into its owner's frame (a ghost's slot stays valid after the ghosts are
+  // dropped, until the next rebuild; for owned slots: the slot, its position, the point).
+  std::size_t slot_owner(std::size_t slot) const;
+  Vec3 slot_position(std::size_t slot) const;
+  Vec3 to_owner_frame(std::size_t slot, const Vec3& x) const;
+  // A point given in the frame of slot `seen`'s owner, as the owner of slot `from` sees it across
+  // their pair (the identity unless one of the two is a ghost).
+  Vec3 pair_frame(std::size_t from, std::size_t seen, const Vec3& x) const;
 
   // Prepares neighbour search and modules; call after particles/walls/law are set.
   void setup();
@@ -104,6 +120,8 @@ class Simulation {
   ContactPipeline contacts_;
   ContactStateStore pair_state_, wall_state_;
   PairTracker tracker_;
+  GhostExchange ghosts_;
+  std::size_t n_owned_ = 0;  // owned particles at the last force computation
   PairForceLoop pair_loop_;
   WallForceLoop wall_loop_;
   std::vector<WallContactRecord> wall_contacts_;  // touching now

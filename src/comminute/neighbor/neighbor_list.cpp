@@ -14,12 +14,20 @@ void NeighborList::make_rows(std::size_t n) {
   for (std::size_t i = 0; i < n; ++i) row_[i + 1] += row_[i];
 }
 
-void NeighborList::build(const ParticleStore& p, double skin,
-                         const std::vector<std::uint8_t>& keep) {
-  // 1. the ids of the pairs whose state is to be carried over
+void NeighborList::build(const ParticleStore& p, double skin, const std::vector<std::uint8_t>& keep,
+                         const std::vector<std::uint64_t>* labels) {
+  // 1. the ids (and periodic labels) of the pairs whose state is to be carried over
   saved_.clear();
+  const bool labelled = labels_.size() == ids_.size();
   for (std::size_t k = 0; k < keep.size() && k < first.size(); ++k)
-    if (keep[k]) saved_.push_back({ids_[first[k]], ids_[second[k]], static_cast<std::uint32_t>(k)});
+    if (keep[k])
+      saved_.push_back({ids_[first[k]], ids_[second[k]], labelled ? labels_[first[k]] : 0,
+                        labelled ? labels_[second[k]] : 0, static_cast<std::uint32_t>(k)});
+  if (labels)
+    labels_ = *labels;
+  else
+    labels_.clear();
+  const std::uint32_t n_owned = static_cast<std::uint32_t>(p.owned());
 
   const std::size_t n = p.size();
   ids_ = p.id;
@@ -71,6 +79,7 @@ void NeighborList::build(const ParticleStore& p, double skin,
       const Vec3 xi = p.x[i];
       const double ri = p.radius[i];
       auto consider = [&](std::uint32_t j) {
+        if (i >= n_owned && j >= n_owned) return;  // two ghosts: each pair is seen once
         const double cut = ri + p.radius[j] + skin;
         if (norm2(xi - p.x[j]) < cut * cut) {
           F.push_back(i);
@@ -104,30 +113,46 @@ void NeighborList::build(const ParticleStore& p, double skin,
     }
   }
   make_rows(n);
-  plan_carry(p);
+  plan_carry(p, labels);
   skin_ = skin;
   index_.adopt(std::move(small_grid), std::move(large_grid), !large_set.empty(), r_ref, r_max, n);
 }
 
-void NeighborList::plan_carry(const ParticleStore& p) {
-  // 4. find the saved pairs in the new rows, by particle ids
+void NeighborList::plan_carry(const ParticleStore& p, const std::vector<std::uint64_t>* labels) {
+  // 4. find the saved pairs in the new rows, by particle ids (a ghost carries its owner's id: the
+  // labels tell the copies apart)
   const std::size_t n = p.size();
   auto& slot = slot_of_id_;  // slot of each id: a sorted (id, slot) table
   slot.resize(n);
   for (std::uint32_t i = 0; i < n; ++i) slot[i] = {p.id[i], i};
   std::sort(slot.begin(), slot.end());
-  auto find_slot = [&slot](std::uint64_t id, std::uint32_t& out) {
-    auto it = std::lower_bound(slot.begin(), slot.end(), std::make_pair(id, std::uint32_t{0}));
-    if (it == slot.end() || it->first != id) return false;
-    out = it->second;
-    return true;
+  auto copies = [&slot](std::uint64_t id) {
+    return std::equal_range(slot.begin(), slot.end(), std::make_pair(id, std::uint32_t{0}),
+                            [](const auto& x, const auto& y) { return x.first < y.first; });
+  };
+  auto label = [labels](std::uint32_t s) { return labels ? (*labels)[s] : std::uint64_t{0}; };
+  // the copies (a, b) of the saved pair's bodies whose label difference is the saved one
+  auto find_pair = [&](const SavedIds& e, std::uint32_t& a, std::uint32_t& b) {
+    const auto [a0, a1] = copies(e.a);
+    const auto [b0, b1] = copies(e.b);
+    for (auto ia = a0; ia != a1; ++ia)
+      for (auto ib = b0; ib != b1; ++ib)
+        if (label(ib->second) - label(ia->second) == e.lb - e.la &&
+            (ia->second < p.owned() || ib->second < p.owned())) {
+          a = ia->second;
+          b = ib->second;
+          return true;
+        }
+    return false;
   };
   carry_.from.clear();
   carry_.to.clear();
   carry_.reversed.clear();
+  carry_.shift.clear();
   for (const auto& e : saved_) {
     std::uint32_t a = 0, b = 0;
-    if (!find_slot(e.a, a) || !find_slot(e.b, b)) continue;  // removed particle
+    if (!find_pair(e, a, b)) continue;  // removed particle (or its image is gone)
+    const std::uint64_t shift = label(a) - e.la;
     // owner: the large one of a mixed pair, else the smaller slot (pairs added by an in-place
     // update are owned by the fragment: look in the other row too)
     const std::uint32_t saved_owner = a;
@@ -139,6 +164,7 @@ void NeighborList::plan_carry(const ParticleStore& p) {
           carry_.from.push_back(e.pair);
           carry_.to.push_back(k);
           carry_.reversed.push_back(a != saved_owner ? 1 : 0);
+          carry_.shift.push_back(shift);
           found = true;
           break;
         }
@@ -244,7 +270,9 @@ std::vector<std::size_t> NeighborList::cell_order(const ParticleStore& p, double
 }
 
 void NeighborList::restore(std::vector<std::uint32_t> f, std::vector<std::uint32_t> s,
-                           std::vector<std::uint64_t> ids, std::vector<std::uint8_t> large) {
+                           std::vector<std::uint64_t> ids, std::vector<std::uint8_t> large,
+                           std::vector<std::uint64_t> labels) {
+  labels_ = std::move(labels);
   first = std::move(f);
   second = std::move(s);
   ids_ = std::move(ids);

@@ -28,13 +28,19 @@ class NeighborList {
 
   // Builds the list for the current positions. The pairs of the previous list flagged in `keep`
   // (by pair index; may be empty) are found again by their particle ids: carried() then tells
-  // where each went.
-  void build(const ParticleStore& p, double skin, const std::vector<std::uint8_t>& keep = {});
+  // where each went. With ghosts in the store (periodic boundaries) no pair joins two ghosts, and
+  // `labels` (one per slot: the periodic image label, PeriodicMap) keys the carry: a pair is found
+  // again by its two ids and the difference of its two labels.
+  void build(const ParticleStore& p, double skin, const std::vector<std::uint8_t>& keep = {},
+             const std::vector<std::uint64_t>* labels = nullptr);
   // The carry plan of the last build: old pair from[e] is new pair to[e], listed the other way
-  // round (owner and other swapped) when reversed[e]. Kept pairs of removed particles are absent.
+  // round (owner and other swapped) when reversed[e]; shift[e] is how much the labels of the pair
+  // changed (the owner's new label minus the old one of the same body; 0 without periodicity).
+  // Kept pairs of removed particles are absent.
   struct Carry {
     std::vector<std::uint32_t> from, to;
     std::vector<std::uint8_t> reversed;
+    std::vector<std::uint64_t> shift;
   };
   const Carry& carried() const { return carry_; }
   // In-place update after compact() removed particles (keeping the order of the others) and new
@@ -60,7 +66,10 @@ class NeighborList {
   const std::vector<std::uint64_t>& ids_at_build() const { return ids_; }
   // Checkpoint support: restore a list exactly as saved.
   void restore(std::vector<std::uint32_t> f, std::vector<std::uint32_t> s,
-               std::vector<std::uint64_t> ids, std::vector<std::uint8_t> large);
+               std::vector<std::uint64_t> ids, std::vector<std::uint8_t> large,
+               std::vector<std::uint64_t> labels = {});
+  // Periodic image labels of the slots at build (empty without periodic boundaries).
+  const std::vector<std::uint64_t>& labels_at_build() const { return labels_; }
   const std::vector<std::uint8_t>& large() const { return large_; }
   // CSR offsets: the pairs owned by slot i are [rows()[i], rows()[i + 1]).
   const std::vector<std::uint32_t>& rows() const { return row_; }
@@ -74,11 +83,13 @@ class NeighborList {
   Carry carry_;                           // of the last build
   std::vector<std::uint32_t> kept_from_;  // of the last in-place update
   // scratch reused between builds
-  void plan_carry(const ParticleStore& p);
+  void plan_carry(const ParticleStore& p, const std::vector<std::uint64_t>* labels);
   struct SavedIds {
-    std::uint64_t a, b;  // ids of owner and other of a kept pair
-    std::uint32_t pair;  // its index in the old list
+    std::uint64_t a, b;    // ids of owner and other of a kept pair
+    std::uint64_t la, lb;  // their labels (periodic images; 0 without)
+    std::uint32_t pair;    // its index in the old list
   };
+  std::vector<std::uint64_t> labels_;  // labels at build (periodic runs)
   std::vector<SavedIds> saved_;
   std::vector<std::uint32_t> spare_first_, spare_second_;  // in-place updates copy into these
   std::vector<std::vector<std::uint32_t>> thread_first_, thread_second_;

@@ -15,6 +15,7 @@ std::uint64_t ParticleStore::add(const ParticleInit& p) {
 }
 
 std::uint64_t ParticleStore::add_with_mass(const ParticleInit& p, double m) {
+  if (!ghost_owner.empty()) throw Error("ParticleStore::add() with ghosts present");
   x.push_back(p.x);
   v.push_back(p.v);
   w.push_back(p.w);
@@ -46,7 +47,42 @@ void permute_vector(std::vector<T>& a, const std::vector<std::size_t>& order, st
 }
 }  // namespace
 
+void ParticleStore::add_ghost(std::size_t owner, const Vec3& gx, const Vec3& gv, const Vec3& gw) {
+  const std::size_t o = owner;
+  x.push_back(gx);
+  v.push_back(gv);
+  w.push_back(gw);
+  f.push_back({});
+  t.push_back({});
+  radius.push_back(radius[o]);
+  mass.push_back(mass[o]);
+  inertia.push_back(inertia[o]);
+  id.push_back(id[o]);
+  material.push_back(material[o]);
+  flags.push_back(flags[o] | pflag::ghost);
+  for (auto& fld : fields_) fld.push_back(fld[o]);
+  ghost_owner.push_back(static_cast<std::uint32_t>(o));
+}
+
+void ParticleStore::drop_ghosts() {
+  const std::size_t n = owned();
+  x.resize(n);
+  v.resize(n);
+  w.resize(n);
+  f.resize(n);
+  t.resize(n);
+  radius.resize(n);
+  mass.resize(n);
+  inertia.resize(n);
+  id.resize(n);
+  material.resize(n);
+  flags.resize(n);
+  for (auto& fld : fields_) fld.resize(n);
+  ghost_owner.clear();
+}
+
 std::size_t ParticleStore::compact() {
+  if (!ghost_owner.empty()) throw Error("ParticleStore::compact() with ghosts present");
   const std::size_t before = size();
   const std::vector<std::uint32_t> fl = flags;
   // one job per array, shared out between the threads (the arrays are independent)
@@ -65,6 +101,7 @@ std::size_t ParticleStore::compact() {
 }
 
 void ParticleStore::permute(const std::vector<std::size_t>& order) {
+  if (!ghost_owner.empty()) throw Error("ParticleStore::permute() with ghosts present");
   std::vector<Vec3> tv;
   std::vector<double> td;
   permute_vector(x, order, tv);
@@ -112,13 +149,13 @@ bool ParticleStore::has_field(const std::string& name) const {
 
 double ParticleStore::total_mass() const {
   double m = 0;
-  for (double mi : mass) m += mi;
+  for (std::size_t i = 0; i < owned(); ++i) m += mass[i];
   return m;
 }
 
 Vec3 ParticleStore::total_momentum() const {
   Vec3 p;
-  for (std::size_t i = 0; i < size(); ++i) p += mass[i] * v[i];
+  for (std::size_t i = 0; i < owned(); ++i) p += mass[i] * v[i];
   return p;
 }
 

@@ -19,6 +19,7 @@ inline constexpr std::uint32_t fixed = 1u << 0;        // not integrated (e.g. a
 inline constexpr std::uint32_t unbreakable = 1u << 1;  // fines / dummy particles
 inline constexpr std::uint32_t growing = 1u << 2;      // fragment still growing to full size
 inline constexpr std::uint32_t remove = 1u << 3;       // marked for removal at the next compact()
+inline constexpr std::uint32_t ghost = 1u << 4;        // a periodic image of an owned particle
 }  // namespace pflag
 
 struct ParticleInit {
@@ -43,12 +44,27 @@ class ParticleStore {
   std::size_t size() const { return id.size(); }
   bool empty() const { return id.empty(); }
 
+  // Owned range and ghost range: slots [0, owned()) are the particles of the run; while the engine
+  // computes forces (from its force loops to the modules' post_force) slots [owned(), size()) are
+  // ghosts, periodic images of owned particles (docs/ARCHITECTURE.md). ghost_owner[g] is the owned
+  // slot of ghost owned() + g. Everything outside the force stage sees no ghosts.
+  std::vector<std::uint32_t> ghost_owner;
+  std::size_t owned() const { return size() - ghost_owner.size(); }
+  std::size_t owner_of(std::size_t slot) const {
+    return slot < owned() ? slot : ghost_owner[slot - owned()];
+  }
+  // Appends a ghost of owned slot `owner` at x with velocity v and angular velocity w (every
+  // other quantity and field copied; force and torque zero).
+  void add_ghost(std::size_t owner, const Vec3& x, const Vec3& v, const Vec3& w);
+  // Drops every ghost.
+  void drop_ghosts();
+
   // Adds a particle (mass and inertia of a solid sphere from radius and density); returns id.
   std::uint64_t add(const ParticleInit& p);
   // Adds with an explicit mass (fragments carry their final mass while still growing).
   std::uint64_t add_with_mass(const ParticleInit& p, double mass);
   // Removes all particles whose flags have pflag::remove; keeps the order of the others.
-  // Returns the number removed.
+  // Returns the number removed. Neither this nor permute() may run while ghosts are present.
   std::size_t compact();
   // Reorders so that new slot k holds old slot order[k] (order is a permutation).
   void permute(const std::vector<std::size_t>& order);

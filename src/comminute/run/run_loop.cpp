@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "comminute/engine/simulation.hpp"
+#include "comminute/engine/stop_condition.hpp"
 #include "comminute/io/output/output_module.hpp"
 #include "comminute/run/progress_reporter.hpp"
 #include "comminute/run/stop_request.hpp"
@@ -13,7 +14,12 @@ int run_until(Simulation& sim, double end_time, OutputModule* output, ProgressRe
               const StopRequest* stop, std::FILE* log) {
   if (output) output->start(sim);
   if (progress) progress->update(sim);  // the starting step, so every step is counted
+  const StopConditionModule* conditions = find_stop_conditions(sim);
   while (sim.time < end_time - 0.5 * sim.dt) {
+    if (conditions && conditions->reached()) {  // a [[stop]] condition: a normal end
+      fmt::print(log, "stop condition reached, {}\n", conditions->describe(sim));
+      break;
+    }
     if (stop && stop->requested()) {
       if (progress) progress->finish(sim);
       if (output) output->write_checkpoint(sim);

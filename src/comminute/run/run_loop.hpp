@@ -20,8 +20,10 @@ class StopRequest;
 // to within half a step. Any of the helpers may be null. Between steps it checks `stop`; on a
 // request it writes a checkpoint (only: so that a restart from it continues every series exactly
 // as an uninterrupted run would), says so on `log` and returns stop->exit_code() (130 for
-// SIGINT). Otherwise it finishes the outputs at the end (last snapshot, row, checkpoint), returns
-// 0. A SimulationError (NaN, ...) propagates; the rows written so far are already on disk.
+// SIGINT). When a [[stop]] condition (engine/stop_condition.hpp) is reached it ends after that
+// step, says which on `log`, and finishes like at the end time. Otherwise it finishes the outputs
+// at the end (last snapshot, row, checkpoint). Both return 0. A SimulationError (NaN, ...)
+// propagates; the rows written so far are already on disk.
 int run_until(Simulation& sim, double end_time, OutputModule* output, ProgressReporter* progress,
               const StopRequest* stop, std::FILE* log = stderr);
 

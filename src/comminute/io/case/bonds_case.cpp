@@ -9,6 +9,10 @@ namespace comminute::io {
 bonds::BondsModule* add_bonds(const CaseTable& root, DemCase& dem) {
   const auto t = root.optional_table("bonds");
   if (!t) return nullptr;
+  if (root.has("periodic"))
+    t->fail("",
+            "bonds do not work with [periodic] boundaries yet (a bond across the boundary "
+            "would need the periodic image of its partner)");
   Simulation& sim = *dem.sim;
   auto law = bonds::BondLawRegistry::create(t->choice("law", bonds::BondLawRegistry::names()), *t);
   bonds::BondOptions opt;

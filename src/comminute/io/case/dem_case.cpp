@@ -9,6 +9,8 @@
 #include "comminute/core/units.hpp"
 #include "comminute/engine/insertion.hpp"
 #include "comminute/io/case/lammps_data.hpp"
+#include "comminute/io/case/machine_case.hpp"
+#include "comminute/io/case/periodic_case.hpp"
 #include "comminute/io/case/wall_builders.hpp"
 
 namespace comminute::io {
@@ -92,6 +94,8 @@ void read_contact(const CaseTable& root, Simulation& sim) {
   if (h != "none") sim.cohesion = CohesionRegistry::create(h, c);
 }
 
+}  // namespace
+
 Region read_region(const CaseTable& t) {
   Region g;
   const std::string shape = t.choice("shape", {"box", "cylinder"});
@@ -112,16 +116,21 @@ Region read_region(const CaseTable& t) {
   return g;
 }
 
+namespace {
+
 // [insert.size]: the distribution by name; it reads its own keys.
 std::shared_ptr<const SizeDistribution> read_size(const CaseTable& t) {
   return SizeDistributionRegistry::create(
       t.choice("distribution", SizeDistributionRegistry::names()), t);
 }
 
-// The smallest particle an insertion can create, and its material (for the time step).
+// The smallest particle an insertion can create, and its material (for the time step); the
+// largest and where the particles start (for the periodic bounds).
 struct SmallestParticle {
   double radius;
   std::uint16_t material;
+  double largest_radius = 0;
+  Vec3 lo, hi;  // m, bounding box of the region or the read particles
 };
 
 SmallestParticle read_insertion(const CaseTable& t, std::size_t index, Simulation& sim) {
@@ -130,12 +139,22 @@ SmallestParticle read_insertion(const CaseTable& t, std::size_t index, Simulatio
   if (type == "data_file") {
     auto particles = read_lammps_data(t.input_file("file"), t.key_path("file"));
     double rmin = std::numeric_limits<double>::infinity();
+    SmallestParticle out{0, mat, 0, {}, {}};
+    const double inf = std::numeric_limits<double>::infinity();
+    out.lo = Vec3{inf, inf, inf};
+    out.hi = -out.lo;
     for (auto& p : particles) {
       p.material = mat;
       sim.particles.add(p);
       rmin = std::min(rmin, p.radius);
+      out.largest_radius = std::max(out.largest_radius, p.radius);
+      for (int a = 0; a < 3; ++a) {
+        out.lo[a] = std::min(out.lo[a], p.x[a] - p.radius);
+        out.hi[a] = std::max(out.hi[a], p.x[a] + p.radius);
+      }
     }
-    return {rmin, mat};
+    out.radius = rmin;
+    return out;
   }
   InsertionSpec s;
   s.label = fmt::format("insert[{}]", index);
@@ -166,9 +185,10 @@ SmallestParticle read_insertion(const CaseTable& t, std::size_t index, Simulatio
     if (has_fraction)
       s.volume_fraction = t.number("volume_fraction", Limits{0.0, 0.5, true, false});
   }
-  const double rmin = 0.5 * s.size->min_diameter();
+  SmallestParticle out{0.5 * s.size->min_diameter(), mat, 0.5 * s.size->max_diameter(), {}, {}};
+  s.region.bounds(out.lo, out.hi);
   sim.modules.push_back(std::make_unique<InsertionModule>(std::move(s), sim.seed));
-  return {rmin, mat};
+  return out;
 }
 
 }  // namespace
@@ -214,11 +234,19 @@ DemCase build_dem_case(const CaseTable& root) {
   if (inserts.empty()) root.fail({}, "no particles: add at least one [[insert]] table");
   // the time step resolves the smallest particle of each insertion (wall materials do not count)
   out.time_step = std::make_unique<TimeStepPolicy>(s, out.end_time);
+  ParticleReach reach;
   for (std::size_t k = 0; k < inserts.size(); ++k) {
     const SmallestParticle sp = read_insertion(inserts[k], k, sim);
     out.time_step->add({sp.radius, sp.material, fmt::format("insert[{}]", k), false});
+    reach.largest_diameter = std::max(reach.largest_diameter, 2 * sp.largest_radius);
+    for (int a = 0; a < 3; ++a) {
+      reach.lo[a] = std::min(reach.lo[a], sp.lo[a]);
+      reach.hi[a] = std::max(reach.hi[a], sp.hi[a]);
+    }
   }
   check_wall_names(walls, sim);
+  add_machines(root, walls, sim);
+  read_periodic(root, sim, reach);
   return out;
 }
 

@@ -10,6 +10,7 @@
 #include "comminute/core/case_table.hpp"
 #include "comminute/engine/simulation.hpp"
 #include "comminute/engine/time_step_policy.hpp"
+#include "comminute/geometry/region.hpp"
 
 namespace comminute::io {
 
@@ -20,6 +21,10 @@ struct DemCase {
   std::string time_step_note;                 // how the step was chosen, for the log
   std::vector<std::string> warnings;
 };
+
+// An [[insert]] or outlet region table: shape "box" (lo, hi) or "cylinder" (center, axis, radius,
+// length).
+Region read_region(const CaseTable& t);
 
 // Builds everything but the time step: modules (breakage) may still be added.
 DemCase build_dem_case(const CaseTable& root);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "comminute/bonds/bond_law.hpp"
 #include "comminute/contact/cohesion.hpp"
 #include "comminute/contact/contact_law.hpp"
 #include "comminute/contact/rolling_resistance.hpp"
@@ -31,6 +32,7 @@ const Family kFamilies[] = {
     {"SizeDistributionRegistry", &SizeDistributionRegistry::names, "docs/case-file.md"},
     {"WallRegistry", &WallRegistry::names, "docs/case-file.md"},
     {"MotionRegistry", &MotionRegistry::names, "docs/case-file.md"},
+    {"BondLawRegistry", &bonds::BondLawRegistry::names, "docs/case-file.md"},
 };
 
 }  // namespace

@@ -81,11 +81,12 @@ TEST(TimeSeriesCsv, HeaderNamesColumnsWithUnitsAndRowsReadBackExactly) {
             "time [s],step [-],time_step [s],particles [-],contacts [-],wall_contacts [-],"
             "kinetic_translational [J],kinetic_rotational [J],potential_gravity [J],elastic [J],"
             "dissipated_damping [J],dissipated_friction [J],energy_removed [J],wall_work [J],"
-            "energy_balance [J],floor_Fx [N],floor_Fy [N],floor_Fz [N],floor_Tx [N m],"
+            "elastic_bonds [J],dissipated_bonds [J],energy_balance [J],floor_Fx [N],floor_Fy "
+            "[N],floor_Fz [N],floor_Tx [N m],"
             "floor_Ty [N m],floor_Tz [N m],floor_P [W],piston_Fx [N],piston_Fy [N],piston_Fz [N],"
             "piston_Tx [N m],piston_Ty [N m],piston_Tz [N m],piston_P [W]");
   const auto v = split(lines[2]);
-  ASSERT_EQ(v.size(), 29u);
+  ASSERT_EQ(v.size(), 31u);
   const Observables o = sample(1e-3);
   EXPECT_EQ(v[0], o.time);
   EXPECT_EQ(v[1], 1000);
@@ -95,10 +96,10 @@ TEST(TimeSeriesCsv, HeaderNamesColumnsWithUnitsAndRowsReadBackExactly) {
   EXPECT_EQ(v[7], 1e-300);
   EXPECT_EQ(v[9], 2.0 / 7.0);
   // balance = 1/3 + 1e-4 + 1e-300 - 12.5 + 2/7 + 0.125 + 0.25 + 0.5 - 1.0, summed in that order
-  EXPECT_EQ(v[14], o.kinetic_translational + 1e-300 - 12.5 + 2.0 / 7.0 + 0.125 + 0.25 + 0.5 - 1.0);
-  EXPECT_EQ(v[24], 1e5 / 3.0);
-  EXPECT_EQ(v[27], -7.25);
-  EXPECT_EQ(v[28], 0.0);  // the piston does not move: no power
+  EXPECT_EQ(v[16], o.kinetic_translational + 1e-300 - 12.5 + 2.0 / 7.0 + 0.125 + 0.25 + 0.5 - 1.0);
+  EXPECT_EQ(v[26], 1e5 / 3.0);
+  EXPECT_EQ(v[29], -7.25);
+  EXPECT_EQ(v[30], 0.0);  // the piston does not move: no power
 }
 
 TEST(TimeSeriesCsv, ResumeDropsRowsAfterCheckpointAndHalfLine) {
@@ -117,7 +118,7 @@ TEST(TimeSeriesCsv, ResumeDropsRowsAfterCheckpointAndHalfLine) {
   ASSERT_EQ(lines.size(), 6u);  // header, 0, 0.1, 0.2, 0.3, 0.35
   EXPECT_EQ(split(lines[4])[0], 0.1 * 3);
   EXPECT_EQ(split(lines[5])[0], 0.35);
-  for (std::size_t k = 1; k < lines.size(); ++k) EXPECT_EQ(split(lines[k]).size(), 29u);
+  for (std::size_t k = 1; k < lines.size(); ++k) EXPECT_EQ(split(lines[k]).size(), 31u);
 }
 
 TEST(TimeSeriesCsv, ResumeRejectsAnotherCasesHeader) {

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include "comminute/core/error.hpp"
+#include "comminute/io/case/bonds_case.hpp"
 #include "comminute/io/case/breakage_case.hpp"
 
 namespace comminute::app {
@@ -58,6 +59,7 @@ LoadedCase load_dem_case(const std::filesystem::path& path) {
   const auto output_table = file.root().optional_table("output");
   io::OutputOptions output = output_table ? io::read_output_options(*output_table)
                                           : io::default_output_options(file.path());
+  io::add_bonds(file.root(), dem);
   io::add_breakage(file.root(), dem);
   io::decide_time_step(dem);
   file.reject_unknown();

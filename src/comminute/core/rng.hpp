@@ -40,6 +40,7 @@ inline constexpr std::uint64_t placement = 3;
 inline constexpr std::uint64_t texture = 4;
 inline constexpr std::uint64_t calibration = 5;
 inline constexpr std::uint64_t pbm = 6;
+inline constexpr std::uint64_t bonds = 7;  // bond strength scatter
 }  // namespace rng_stream
 
 }  // namespace comminute

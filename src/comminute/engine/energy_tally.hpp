@@ -6,10 +6,12 @@ namespace comminute {
 
 // Running energy ledger (J), for the time-series output and conservation checks.
 struct EnergyLedger {
-  double damping = 0;    // dissipated by normal/tangential dashpots
-  double friction = 0;   // dissipated by sliding and rolling friction
-  double removed = 0;    // taken out by modules (breakage, particle removal), see their logs
-  double wall_work = 0;  // work done on the particles by moving walls
+  double damping = 0;          // dissipated by normal/tangential dashpots
+  double friction = 0;         // dissipated by sliding and rolling friction
+  double removed = 0;          // taken out by modules (breakage, particle removal), see their logs
+  double wall_work = 0;        // work done on the particles by moving walls
+  double bond_dissipated = 0;  // dissipated by bond damage and released when bonds fail
+  double bond_elastic = 0;     // strain energy held in the bonds now (set by the bonds module)
 };
 
 struct EnergyTally {

@@ -42,6 +42,8 @@ std::vector<Column> TimeSeriesWriter::columns(const std::vector<std::string>& wa
                            {"dissipated_friction", "J"},
                            {"energy_removed", "J"},
                            {"wall_work", "J"},
+                           {"elastic_bonds", "J"},
+                           {"dissipated_bonds", "J"},
                            {"energy_balance", "J"}};
   for (const auto& w : wall_names) {
     for (const char* a : {"_Fx", "_Fy", "_Fz"}) c.push_back({w + a, "N"});
@@ -58,7 +60,8 @@ void TimeSeriesWriter::append(const Observables& o,
                             wall_names_.size(), walls.size()));
   const EnergyLedger& l = o.ledger;
   const double balance = o.kinetic_translational + o.kinetic_rotational + o.potential_gravity +
-                         o.elastic + l.damping + l.friction + l.removed - l.wall_work;
+                         o.elastic + l.bond_elastic + l.damping + l.friction + l.removed +
+                         l.bond_dissipated - l.wall_work;
   std::vector<Cell> row = {o.time,
                            o.step,
                            o.dt,
@@ -73,6 +76,8 @@ void TimeSeriesWriter::append(const Observables& o,
                            l.friction,
                            l.removed,
                            l.wall_work,
+                           l.bond_elastic,
+                           l.bond_dissipated,
                            balance};
   for (const auto& w : walls) {
     for (double v : {w->force.x, w->force.y, w->force.z, w->torque.x, w->torque.y, w->torque.z})

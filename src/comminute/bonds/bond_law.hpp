@@ -1,0 +1,70 @@
+#pragma once
+// Bond laws: what holds two bonded particles together until the bond fails. One interface, one
+// registry keyed by the case file's [bonds] law name; a law reads its own keys from [bonds].
+// A bond acts at its contact point (middle of the gap between the two spheres) in parallel with
+// the contact law (Potyondy & Cundall 2004: the linear contact acts beside the parallel bond).
+// Sign convention: `normal` points from particle i to particle j; the law returns the force and
+// moment the bond exerts on j; i receives the opposite force and moment.
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "comminute/core/case_table.hpp"
+#include "comminute/core/registry.hpp"
+#include "comminute/core/rng.hpp"
+#include "comminute/core/vec3.hpp"
+
+namespace comminute::bonds {
+
+enum class FailureMode : std::uint8_t { none = 0, tensile = 1, shear = 2 };
+
+// What a bond remembers between steps (plain data: checkpointed as is).
+struct BondState {
+  Vec3 normal;                  // unit normal i -> j at the last update
+  Vec3 shear_force;             // N, stored shear force on j (parallel bond)
+  Vec3 moment;                  // N m, stored moment on j: twist along normal + bending (parallel)
+  Vec3 slip;                    // m, shear displacement of j relative to i (cohesive bond)
+  double length0 = 0;           // m, centre distance when the bond was made
+  double radius = 0;            // m, bond radius R̄ = λ̄ min(R_i, R_j)
+  double tensile_strength = 0;  // Pa, this bond's (drawn when strengths scatter)
+  double shear_strength = 0;    // Pa
+  double damage = 0;            // 0 (intact) ... 1 (failed), never decreases
+  double dissipated = 0;        // J, dissipated by this bond so far (damage, release at failure)
+  double strain_energy = 0;     // J, held now
+  FailureMode failed = FailureMode::none;
+  std::uint8_t padding[7] = {};  // written to checkpoints: no undefined bytes
+};
+
+// The motion of the two particles over one step, as the bond sees it.
+struct BondMotion {
+  Vec3 normal;              // unit normal i -> j now
+  double length = 0;        // m, centre distance now
+  Vec3 slip_increment;      // m, shear displacement of j relative to i at the contact point
+  Vec3 rotation_increment;  // rad, rotation of j relative to i over the step
+};
+
+struct BondLoad {
+  Vec3 force;   // N, on j (i gets -force)
+  Vec3 moment;  // N m, on j besides the moment of the force (i gets -moment)
+};
+
+class BondLaw {
+ public:
+  virtual ~BondLaw() = default;
+  virtual std::string name() const = 0;
+  // A new bond between spheres of radii ri, rj at centre distance length along normal.
+  virtual BondState create(double ri, double rj, double length, const Vec3& normal,
+                           Rng& rng) const = 0;
+  // Advances the bond by one step: updates its state (damage, stored force and moment, strain
+  // energy, dissipated energy, failure) and returns the load on j. A failed bond carries nothing.
+  virtual BondLoad update(BondState& s, const BondMotion& m) const = 0;
+  // Largest stiffness of the bond (N/m), for the time-step check.
+  virtual double stiffness(const BondState& s) const = 0;
+};
+
+using BondLawRegistry = Registry<BondLaw, const CaseTable&>;
+
+// Rotates v by the rotation that takes unit vector a onto unit vector b (about a x b).
+Vec3 rotate_with(const Vec3& v, const Vec3& a, const Vec3& b);
+
+}  // namespace comminute::bonds

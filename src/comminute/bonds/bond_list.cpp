@@ -1,0 +1,80 @@
+#include "comminute/bonds/bond_list.hpp"
+
+#include <algorithm>
+#include <utility>
+
+#include "comminute/core/error.hpp"
+
+namespace comminute::bonds {
+
+void BondList::add(std::uint64_t a, std::uint32_t sa, std::uint64_t b, std::uint32_t sb,
+                   const BondState& s) {
+  id_i.push_back(a);
+  id_j.push_back(b);
+  slot_i.push_back(sa);
+  slot_j.push_back(sb);
+  state.push_back(s);
+}
+
+std::vector<std::size_t> BondList::locate(const ParticleStore& p) {
+  const std::size_t n = p.owned();  // ghosts (periodic images) are never bonded
+  auto valid = [&](std::uint32_t slot, std::uint64_t id) { return slot < n && p.id[slot] == id; };
+  bool stale = false;
+  for (std::size_t b = 0; b < size() && !stale; ++b)
+    stale = !valid(slot_i[b], id_i[b]) || !valid(slot_j[b], id_j[b]);
+  std::vector<std::size_t> lost;
+  if (!stale) return lost;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> by_id(n);
+  for (std::size_t s = 0; s < n; ++s) by_id[s] = {p.id[s], static_cast<std::uint32_t>(s)};
+  std::sort(by_id.begin(), by_id.end());
+  auto find = [&](std::uint64_t id) {
+    auto it = std::lower_bound(by_id.begin(), by_id.end(), std::pair{id, std::uint32_t{0}});
+    return it != by_id.end() && it->first == id ? it->second : none;
+  };
+  for (std::size_t b = 0; b < size(); ++b) {
+    slot_i[b] = find(id_i[b]);
+    slot_j[b] = find(id_j[b]);
+    if (slot_i[b] == none || slot_j[b] == none) lost.push_back(b);
+  }
+  return lost;
+}
+
+void BondList::remove(const std::vector<std::uint8_t>& gone) {
+  std::size_t k = 0;
+  for (std::size_t b = 0; b < size(); ++b) {
+    if (gone[b]) continue;
+    id_i[k] = id_i[b];
+    id_j[k] = id_j[b];
+    slot_i[k] = slot_i[b];
+    slot_j[k] = slot_j[b];
+    state[k] = state[b];
+    ++k;
+  }
+  id_i.resize(k);
+  id_j.resize(k);
+  slot_i.resize(k);
+  slot_j.resize(k);
+  state.resize(k);
+}
+
+void BondList::save(Archive& a, const std::string& prefix) const {
+  a.put(prefix + "id_i", id_i);
+  a.put(prefix + "id_j", id_j);
+  a.put(prefix + "state", state);
+}
+
+void BondList::load(const Archive& a, const std::string& prefix) {
+  id_i = a.get<std::uint64_t>(prefix + "id_i");
+  id_j = a.get<std::uint64_t>(prefix + "id_j");
+  state = a.get<BondState>(prefix + "state");
+  if (id_j.size() != id_i.size() || state.size() != id_i.size())
+    throw Error("checkpoint entries '" + prefix + "id_i', 'id_j' and 'state' differ in length");
+  for (const BondState& s : state)
+    if (!(s.radius > 0) || !(s.length0 > 0) || !(s.damage >= 0 && s.damage < 1) ||
+        s.failed != FailureMode::none)
+      throw Error("checkpoint entry '" + prefix + "state' holds an invalid bond");
+  slot_i.assign(size(), none);
+  slot_j.assign(size(), none);
+}
+
+}  // namespace comminute::bonds

@@ -1,0 +1,193 @@
+#include "comminute/bonds/bonds_module.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+#include "comminute/core/error.hpp"
+#include "comminute/engine/simulation.hpp"
+
+namespace comminute::bonds {
+
+BondsModule::BondsModule(std::unique_ptr<BondLaw> law, BondOptions options)
+    : law_(std::move(law)), options_(std::move(options)) {}
+
+void BondsModule::setup(Simulation& sim) {
+  rng_ = Rng(sim.seed, rng_stream::bonds);
+}
+
+void BondsModule::post_force(Simulation& sim) {
+  if (!created_ && sim.time >= options_.create_at - 0.5 * sim.dt) create_bonds(sim);
+  if (created_) apply(sim);
+}
+
+void BondsModule::create_bonds(Simulation& sim) {
+  created_ = true;
+  const ParticleStore& p = sim.particles;
+  const NeighborList& pairs = sim.pairs();
+  if (options_.gap_tolerance > sim.options.skin)
+    throw SimulationError(fmt::format(
+        "[bonds] gap_tolerance = {} m exceeds the neighbour skin {} m: pairs that far apart are "
+        "not listed; raise [simulation] skin or lower gap_tolerance",
+        options_.gap_tolerance, sim.options.skin));
+  auto selected = [&](std::size_t i) {
+    return options_.materials.empty() ||
+           std::find(options_.materials.begin(), options_.materials.end(), p.material[i]) !=
+               options_.materials.end();
+  };
+  // candidates in id order, so that the bonds and their random strengths do not depend on slots
+  std::vector<std::tuple<std::uint64_t, std::uint64_t, std::uint32_t, std::uint32_t>> found;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    std::uint32_t i = pairs.first[k], j = pairs.second[k];
+    if (i >= p.owned() || j >= p.owned()) continue;  // a periodic image: not bonded
+    if (!selected(i) || !selected(j)) continue;
+    const double gap = norm(p.x[j] - p.x[i]) - p.radius[i] - p.radius[j];
+    if (gap > options_.gap_tolerance) continue;
+    if (p.id[j] < p.id[i]) std::swap(i, j);
+    found.emplace_back(p.id[i], p.id[j], i, j);
+  }
+  std::sort(found.begin(), found.end());
+  for (const auto& [a, b, i, j] : found) {
+    const Vec3 d = p.x[j] - p.x[i];
+    const double length = norm(d);
+    if (!(length > 0)) continue;  // coincident centres: no direction to bond along
+    const BondState s = law_->create(p.radius[i], p.radius[j], length, d / length, rng_);
+    // velocity Verlet is stable for ω dt < 2; ω² ≤ 4 k / m covers the axial, shear, bending and
+    // twist modes of two solid spheres joined by the bond
+    const double m = std::min(p.mass[i], p.mass[j]);
+    const double limit = std::sqrt(m / (4 * law_->stiffness(s)));
+    if (sim.dt > limit)
+      throw SimulationError(fmt::format(
+          "the bond between particles {} and {} needs a time step of at most {:.4g} s (it is "
+          "{:.4g} s): set [simulation] time_step",
+          a, b, limit, sim.dt));
+    bonds_.add(a, i, b, j, s);
+  }
+}
+
+void BondsModule::fail(Simulation& sim, std::size_t b, FailureCause cause, const Vec3& at) {
+  BondState& s = bonds_.state[b];
+  if (cause == FailureCause::particle_removed) {  // what the bond held is lost with it
+    sim.ledger.bond_dissipated += s.strain_energy;
+    s.dissipated += s.strain_energy;
+    s.strain_energy = 0;
+  }
+  failures_.push_back({sim.time, bonds_.id_i[b], bonds_.id_j[b], at, s.dissipated, cause});
+  gone_[b] = 1;
+}
+
+void BondsModule::apply(Simulation& sim) {
+  ParticleStore& p = sim.particles;
+  gone_.assign(bonds_.size(), 0);
+  for (std::size_t b : bonds_.locate(p)) {
+    const std::uint32_t k =
+        bonds_.slot_i[b] != BondList::none ? bonds_.slot_i[b] : bonds_.slot_j[b];
+    fail(sim, b, FailureCause::particle_removed, k != BondList::none ? p.x[k] : Vec3{});
+  }
+  double elastic = 0;
+  for (std::size_t b = 0; b < bonds_.size(); ++b) {
+    if (gone_[b]) continue;
+    const std::uint32_t i = bonds_.slot_i[b], j = bonds_.slot_j[b];
+    BondState& s = bonds_.state[b];
+    const Vec3 d = p.x[j] - p.x[i];
+    BondMotion m;
+    m.length = norm(d);
+    m.normal = m.length > 0 ? d / m.length : s.normal;
+    // the contact point: the middle of the gap (or overlap) between the two surfaces
+    const Vec3 xc =
+        p.x[i] + (p.radius[i] + 0.5 * (m.length - p.radius[i] - p.radius[j])) * m.normal;
+    // velocities are at the half step, so v dt is this step's displacement
+    const Vec3 vc = p.v[j] + cross(p.w[j], xc - p.x[j]) - p.v[i] - cross(p.w[i], xc - p.x[i]);
+    m.slip_increment = (vc - dot(vc, m.normal) * m.normal) * sim.dt;
+    m.rotation_increment = (p.w[j] - p.w[i]) * sim.dt;
+    const double before = s.dissipated;
+    const BondLoad load = law_->update(s, m);
+    sim.ledger.bond_dissipated += s.dissipated - before;
+    if (s.failed != FailureMode::none) {
+      fail(sim, b, s.failed == FailureMode::tensile ? FailureCause::tensile : FailureCause::shear,
+           xc);
+      continue;
+    }
+    p.f[j] += load.force;
+    p.f[i] -= load.force;
+    p.t[j] += cross(xc - p.x[j], load.force) + load.moment;
+    p.t[i] -= cross(xc - p.x[i], load.force) + load.moment;
+    elastic += s.strain_energy;
+  }
+  sim.ledger.bond_elastic = elastic;
+  if (std::find(gone_.begin(), gone_.end(), std::uint8_t{1}) != gone_.end()) bonds_.remove(gone_);
+}
+
+void BondsModule::save(Archive& a) const {
+  bonds_.save(a, "bonds/list/");
+  a.put_value("bonds/rng", rng_.state());
+  a.put_value("bonds/created", static_cast<std::uint8_t>(created_));
+  a.put("bonds/failures", failures_);
+  a.put("bonds/samples", samples_);
+  a.put("bonds/damage_rows", damage_rows_);
+}
+
+void BondsModule::load(const Archive& a) {
+  bonds_.load(a, "bonds/list/");
+  rng_.set_state(a.get_value<Rng::State>("bonds/rng"));
+  created_ = a.get_value<std::uint8_t>("bonds/created") != 0;
+  failures_ = a.get<BondFailure>("bonds/failures");
+  samples_ = a.get<BondSample>("bonds/samples");
+  damage_rows_ = a.get<BondDamageRow>("bonds/damage_rows");
+}
+
+void BondsModule::sample(const Simulation& sim) {
+  BondSample r;
+  r.time = sim.time;
+  r.intact = bonds_.size();
+  for (const BondFailure& f : failures_) {
+    if (f.cause == FailureCause::tensile) ++r.tensile;
+    if (f.cause == FailureCause::shear) ++r.shear;
+    if (f.cause == FailureCause::particle_removed) ++r.removed;
+  }
+  for (const BondState& s : bonds_.state) {
+    r.mean_damage += s.damage;
+    r.max_damage = std::max(r.max_damage, s.damage);
+  }
+  if (!bonds_.state.empty()) r.mean_damage /= static_cast<double>(bonds_.size());
+  r.elastic = sim.ledger.bond_elastic;
+  r.dissipated = sim.ledger.bond_dissipated;
+  samples_.push_back(r);
+  for (std::size_t b = 0; b < bonds_.size(); ++b)
+    if (bonds_.state[b].damage > 0)
+      damage_rows_.push_back({sim.time, bonds_.id_i[b], bonds_.id_j[b], bonds_.state[b].damage});
+}
+
+std::vector<Table> BondsModule::tables(const Simulation&) const {
+  Table summary("bonds", {{"time", "s"},
+                          {"bonds", "-"},
+                          {"failed_tensile", "-"},
+                          {"failed_shear", "-"},
+                          {"removed_with_particle", "-"},
+                          {"mean_damage", "-"},
+                          {"max_damage", "-"},
+                          {"elastic_bonds", "J"},
+                          {"dissipated_bonds", "J"}});
+  for (const BondSample& r : samples_)
+    summary.add_row({r.time, r.intact, r.tensile, r.shear, r.removed, r.mean_damage, r.max_damage,
+                     r.elastic, r.dissipated});
+  Table failures("bond_failures", {{"time", "s"},
+                                   {"particle_i", "-"},
+                                   {"particle_j", "-"},
+                                   {"x", "m"},
+                                   {"y", "m"},
+                                   {"z", "m"},
+                                   {"mode", "-"},
+                                   {"energy", "J"}});
+  for (const BondFailure& f : failures_)
+    failures.add_row({f.time, f.id_i, f.id_j, f.position.x, f.position.y, f.position.z,
+                      cause_name(f.cause), f.energy});
+  Table damage("bond_damage",
+               {{"time", "s"}, {"particle_i", "-"}, {"particle_j", "-"}, {"damage", "-"}});
+  for (const BondDamageRow& r : damage_rows_) damage.add_row({r.time, r.id_i, r.id_j, r.damage});
+  return {summary, failures, damage};
+}
+
+}  // namespace comminute::bonds

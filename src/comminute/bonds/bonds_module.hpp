@@ -1,0 +1,75 @@
+#pragma once
+// Bonded particles as an engine module (physics stage): makes the bonds once (at `create_at`,
+// every neighbour pair whose gap is at most `gap_tolerance`, optionally of some materials only),
+// then each step, after the contact forces, moves every bond with its particles, asks the bond
+// law for its force and moment, adds them to the two particles (the contact law acts in parallel),
+// removes failed bonds and logs each failure. Energy: the strain energy held in the bonds and the
+// energy they dissipated are booked in the engine's ledger (bond_elastic, bond_dissipated).
+#include <memory>
+#include <vector>
+
+#include "comminute/bonds/bond_failure.hpp"
+#include "comminute/bonds/bond_law.hpp"
+#include "comminute/bonds/bond_list.hpp"
+#include "comminute/core/rng.hpp"
+#include "comminute/engine/module.hpp"
+#include "comminute/engine/series_source.hpp"
+
+namespace comminute::bonds {
+
+struct BondOptions {
+  double create_at = 0;                  // s
+  double gap_tolerance = 0;              // m
+  std::vector<std::uint16_t> materials;  // empty: all
+};
+
+// One row of bonds.csv (plain data: checkpointed as is).
+struct BondSample {
+  double time = 0;
+  std::uint64_t intact = 0, tensile = 0, shear = 0, removed = 0;
+  double mean_damage = 0, max_damage = 0, elastic = 0, dissipated = 0;
+};
+
+// One row of bond_damage.csv: a damaged bond at a sample time.
+struct BondDamageRow {
+  double time = 0;
+  std::uint64_t id_i = 0, id_j = 0;
+  double damage = 0;
+};
+
+class BondsModule final : public Module, public SeriesSource {
+ public:
+  BondsModule(std::unique_ptr<BondLaw> law, BondOptions options);
+
+  std::string name() const override { return "bonds"; }
+  void setup(Simulation& sim) override;
+  void post_force(Simulation& sim) override;
+  void save(Archive& a) const override;
+  void load(const Archive& a) override;
+  SeriesSource* series_source() override { return this; }
+  void sample(const Simulation& sim) override;
+  std::vector<Table> tables(const Simulation& sim) const override;
+
+  const BondLaw& law() const { return *law_; }
+  const BondList& bonds() const { return bonds_; }
+  const std::vector<BondFailure>& failures() const { return failures_; }
+  bool created() const { return created_; }
+  // Makes the bonds now (post_force does it at create_at); public for tests and builders.
+  void create_bonds(Simulation& sim);
+
+ private:
+  void apply(Simulation& sim);
+  void fail(Simulation& sim, std::size_t b, FailureCause cause, const Vec3& at);
+
+  std::unique_ptr<BondLaw> law_;
+  BondOptions options_;
+  BondList bonds_;
+  Rng rng_;
+  bool created_ = false;
+  std::vector<BondFailure> failures_;
+  std::vector<BondSample> samples_;
+  std::vector<BondDamageRow> damage_rows_;
+  std::vector<std::uint8_t> gone_;  // scratch: bonds to remove this step
+};
+
+}  // namespace comminute::bonds

@@ -60,6 +60,7 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
     const Vec3 *X = p.x.data(), *V = p.v.data(), *W = p.w.data();
     const double *R = p.radius.data(), *M = p.mass.data(), *I = p.inertia.data();
     const std::uint16_t* mat = p.material.data();
+    const std::uint32_t *first = pairs.first.data(), *second = pairs.second.data();
     const std::uint32_t own0 = owner_begin[t], own1 = owner_begin[t + 1];
     auto& queued = cross_[t];
     queued.clear();
@@ -95,7 +96,7 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
       nrun = 0;
     };
     for (std::size_t k = k0; k < k1; ++k) {
-      const std::uint32_t i = pairs.first[k], j = pairs.second[k];
+      const std::uint32_t i = first[k], j = second[k];
       const Vec3 d = X[i] - X[j];
       const double rsum = R[i] + R[j];
       const double dist2 = norm2(d);

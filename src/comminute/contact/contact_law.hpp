@@ -41,6 +41,23 @@ struct ContactForces {
   double friction_dissipation = 0;   // J, dissipated by sliding (and rolling slip) this step
 };
 
+// Contacts evaluated in one call (the pair loop hands them over in runs): contact c has the
+// kinematics kinematics[c], the parameters *parameters[c] and the slots of contact index[c] of the
+// store `slots`; its forces go to forces[c] (zeroed by the caller).
+struct ContactBatch {
+  std::size_t size = 0;
+  const ContactKinematics* kinematics = nullptr;
+  const PairParameters* const* parameters = nullptr;
+  const std::size_t* index = nullptr;
+  const Slots* slots = nullptr;
+  ContactForces* forces = nullptr;
+  template <class F>  // f(kinematics, parameters, state, forces) for every contact, in order
+  void for_each(F f) const {
+    for (std::size_t c = 0; c < size; ++c)
+      f(kinematics[c], *parameters[c], StateRef{slots, index[c]}, forces[c]);
+  }
+};
+
 // The largest time step a law resolves, and why (s; infinity: no limit of its own, the Rayleigh
 // time of the time-step policy governs).
 struct StepLimit {
@@ -60,6 +77,12 @@ class ContactLaw {
   // Normal and tangential force for one contact; updates the contact's slots in `s`.
   virtual void compute(const ContactKinematics& k, const PairParameters& p, const StateRef& s,
                        ContactForces& out) const = 0;
+  // compute() for every contact of a batch, in order: one virtual call per batch. A law derived
+  // from ContactLawOf<itself> gets this loop with its compute() inlined.
+  virtual void compute_batch(const ContactBatch& b) const {
+    b.for_each([this](const ContactKinematics& k, const PairParameters& p, const StateRef& s,
+                      ContactForces& out) { compute(k, p, s, out); });
+  }
   // Normal stiffness at overlap `delta` (N/m), for energy partition.
   virtual double normal_stiffness(const PairParameters& p, double effective_radius,
                                   double effective_mass, double delta) const = 0;
@@ -70,6 +93,18 @@ class ContactLaw {
 
  protected:
   bool dynamic_friction_ = false;
+};
+
+// The base of a law class `Law` (declared final): compute_batch() calls Law::compute directly, so
+// the compiler inlines the law into the batch loop (no virtual call per contact).
+template <class Law>
+class ContactLawOf : public ContactLaw {
+ public:
+  void compute_batch(const ContactBatch& b) const final {
+    const Law& law = static_cast<const Law&>(*this);
+    b.for_each([&law](const ContactKinematics& k, const PairParameters& p, const StateRef& s,
+                      ContactForces& out) { law.Law::compute(k, p, s, out); });
+  }
 };
 
 // A law's factory reads the law's keys from the [contact] table.

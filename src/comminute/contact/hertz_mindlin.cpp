@@ -10,7 +10,7 @@
 namespace comminute {
 namespace {
 
-class HertzMindlin final : public ContactLaw {
+class HertzMindlin final : public ContactLawOf<HertzMindlin> {
  public:
   explicit HertzMindlin(const CaseTable& t)
       : tangential_damping_(t.boolean("tangential_damping", true)) {}

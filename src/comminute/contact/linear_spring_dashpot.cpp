@@ -13,7 +13,7 @@
 namespace comminute {
 namespace {
 
-class LinearSpringDashpot final : public ContactLaw {
+class LinearSpringDashpot final : public ContactLawOf<LinearSpringDashpot> {
  public:
   explicit LinearSpringDashpot(const CaseTable& t)
       : kn_(t.number("normal_stiffness", Limits::positive())),

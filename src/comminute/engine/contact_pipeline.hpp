@@ -59,6 +59,18 @@ class ContactPipeline {
     if (rolling_) rolling_->compute(k, p, s, out);
     if (loading_) loading_->record(s, k.overlap, out);
   }
+  // evaluate() for every contact of a batch: the law in one call, then the optional sub-models
+  // contact by contact (each contact's result is the same as evaluate()'s).
+  void evaluate(const ContactBatch& b) const {
+    law_->compute_batch(b);
+    if (!cohesion_ && !rolling_ && !loading_) return;
+    b.for_each([this](const ContactKinematics& k, const PairParameters& p, const StateRef& s,
+                      ContactForces& out) {
+      if (cohesion_) cohesion_->compute(k, p, out);
+      if (rolling_) rolling_->compute(k, p, s, out);
+      if (loading_) loading_->record(s, k.overlap, out);
+    });
+  }
 
  private:
   ContactLaw* law_ = nullptr;

@@ -29,19 +29,27 @@ double VelocityVerlet::kick_drift(ParticleStore& p, double dt, const Vec3& gravi
   return track ? worst : std::numeric_limits<double>::infinity();
 }
 
+namespace {
+// 0 when every component of `a` is finite, else NaN (inf - inf and NaN - NaN are NaN): summed over
+// the particles without a branch per component.
+inline double finite_probe(const Vec3& a) {
+  return (a.x - a.x) + (a.y - a.y) + (a.z - a.z);
+}
+}  // namespace
+
 bool VelocityVerlet::kick(ParticleStore& p, double dt) {
   const std::size_t n = p.owned();
   const double h = 0.5 * dt;
-  bool bad = false;
-#pragma omp parallel for schedule(static) reduction(|| : bad) if (n >= kParallelMin)
+  double probe = 0;  // stays exactly 0 while every state is finite, in any summation order
+#pragma omp parallel for schedule(static) reduction(+ : probe) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     if (!(p.flags[i] & pflag::fixed)) {
       p.v[i] += (h / p.mass[i]) * p.f[i];
       p.w[i] += (h / p.inertia[i]) * p.t[i];
     }
-    bad = bad || !is_finite(p.x[i]) || !is_finite(p.v[i]) || !is_finite(p.w[i]);
+    probe += finite_probe(p.x[i]) + finite_probe(p.v[i]) + finite_probe(p.w[i]);
   }
-  return bad;
+  return !(probe == 0);
 }
 
 void VelocityVerlet::start_forces(ParticleStore& p, const Vec3& gravity) {

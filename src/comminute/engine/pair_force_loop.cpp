@@ -1,5 +1,6 @@
 #include "comminute/engine/pair_force_loop.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "comminute/core/parallel.hpp"
@@ -8,6 +9,12 @@
 namespace comminute {
 
 namespace {
+constexpr std::size_t kRun = 64;  // contacts per call of the contact pipeline
+struct Touching {                 // a touching pair of a run: its particles and lever arms (m)
+  std::uint32_t i, j;
+  double ri, rj;
+};
+
 // Splits [0, n) into nt ranges of about equal total weight; weight(k) is the cost of item k.
 template <class Weight>
 std::vector<std::size_t> balanced_split(std::size_t n, int nt, Weight weight) {
@@ -50,17 +57,48 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
     const int t = thread_id();
     Vec3* F = p.f.data();
     Vec3* T = p.t.data();
+    const Vec3 *X = p.x.data(), *V = p.v.data(), *W = p.w.data();
+    const double *R = p.radius.data(), *M = p.mass.data(), *I = p.inertia.data();
+    const std::uint16_t* mat = p.material.data();
+    const std::uint32_t *first = pairs.first.data(), *second = pairs.second.data();
     const std::uint32_t own0 = owner_begin[t], own1 = owner_begin[t + 1];
     auto& queued = cross_[t];
     queued.clear();
     EnergyTally tl;  // local: threads' tallies side by side in memory would share a cache line
     const std::size_t k0 = rows[own0], k1 = rows[own1];
-    ContactKinematics ck;
-    ck.dt = dt;
+    // the touching pairs are gathered into runs of up to kRun contacts, evaluated in one call
+    // (the law inlined in its loop), then their forces are added in pair order
+    std::array<ContactKinematics, kRun> ck;
+    std::array<const PairParameters*, kRun> pp;
+    std::array<std::size_t, kRun> index;
+    std::array<ContactForces, kRun> out;
+    std::array<Touching, kRun> who;
+    for (auto& c : ck) c.dt = dt;
+    std::size_t nrun = 0;
+    auto flush = [&] {
+      pipeline.evaluate(ContactBatch{nrun, ck.data(), pp.data(), index.data(), &slots, out.data()});
+      for (std::size_t c = 0; c < nrun; ++c) {
+        const ContactForces& o = out[c];
+        const Vec3& nrm = ck[c].normal;
+        const auto [i, j, ri, rj] = who[c];
+        tl.add(o);
+        const Vec3 fc = o.normal_force * nrm + o.tangential_force;
+        F[i] += fc;
+        T[i] += o.rolling_torque - ri * cross(nrm, o.tangential_force);
+        const Vec3 tj = -(o.rolling_torque + rj * cross(nrm, o.tangential_force));
+        if (j >= own0 && j < own1) {
+          F[j] -= fc;
+          T[j] += tj;
+        } else {
+          queued.push_back({j, -fc, tj});
+        }
+      }
+      nrun = 0;
+    };
     for (std::size_t k = k0; k < k1; ++k) {
-      const std::uint32_t i = pairs.first[k], j = pairs.second[k];
-      const Vec3 d = p.x[i] - p.x[j];
-      const double rsum = p.radius[i] + p.radius[j];
+      const std::uint32_t i = first[k], j = second[k];
+      const Vec3 d = X[i] - X[j];
+      const double rsum = R[i] + R[j];
       const double dist2 = norm2(d);
       if (dist2 >= rsum * rsum) {
         if (active[k]) state.clear(k);  // the bodies separated: the contact's state is gone
@@ -70,32 +108,25 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
       const double dist = std::sqrt(dist2);
       const Vec3 nrm = d / dist;
       const double overlap = rsum - dist;
-      const double ri = p.radius[i] - 0.5 * overlap, rj = p.radius[j] - 0.5 * overlap;
-      const Vec3 vrel = p.v[i] - p.v[j] - cross(p.w[i], ri * nrm) - cross(p.w[j], rj * nrm);
+      const double ri = R[i] - 0.5 * overlap, rj = R[j] - 0.5 * overlap;
+      const Vec3 vrel = V[i] - V[j] - cross(W[i], ri * nrm) - cross(W[j], rj * nrm);
       const double vn = dot(vrel, nrm);
-      ck.normal = nrm;
-      ck.overlap = overlap;
-      ck.overlap_rate = -vn;
-      ck.tangential_velocity = vrel - vn * nrm;
-      ck.relative_angular_velocity = p.w[i] - p.w[j];
-      ck.effective_radius = p.radius[i] * p.radius[j] / rsum;
-      ck.effective_mass = p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
-      ck.effective_inertia = p.inertia[i] * p.inertia[j] / (p.inertia[i] + p.inertia[j]);
-      const PairParameters& pp = materials.pair(p.material[i], p.material[j]);
-      ContactForces out;
-      pipeline.evaluate(ck, pp, StateRef{&slots, k}, out);
-      tl.add(out);
-      const Vec3 fc = out.normal_force * nrm + out.tangential_force;
-      F[i] += fc;
-      T[i] += out.rolling_torque - ri * cross(nrm, out.tangential_force);
-      const Vec3 tj = -(out.rolling_torque + rj * cross(nrm, out.tangential_force));
-      if (j >= own0 && j < own1) {
-        F[j] -= fc;
-        T[j] += tj;
-      } else {
-        queued.push_back({j, -fc, tj});
-      }
+      ContactKinematics& c = ck[nrun];
+      c.normal = nrm;
+      c.overlap = overlap;
+      c.overlap_rate = -vn;
+      c.tangential_velocity = vrel - vn * nrm;
+      c.relative_angular_velocity = W[i] - W[j];
+      c.effective_radius = R[i] * R[j] / rsum;
+      c.effective_mass = M[i] * M[j] / (M[i] + M[j]);
+      c.effective_inertia = I[i] * I[j] / (I[i] + I[j]);
+      pp[nrun] = &materials.pair(mat[i], mat[j]);
+      index[nrun] = k;
+      out[nrun] = ContactForces{};
+      who[nrun] = {i, j, ri, rj};
+      if (++nrun == kRun) flush();
     }
+    flush();
     tally[t] = tl;
   }
   for (const auto& list : cross_)

@@ -111,9 +111,18 @@ void NeighborList::build(const ParticleStore& p, double skin, const std::vector<
       std::copy(ts[t].begin(), ts[t].end(), second.begin() + static_cast<std::ptrdiff_t>(at));
       at += tf[t].size();
     }
+    // released before the contact state is carried into new arrays, which lowers the peak
+    // memory of a rebuild (they are allocated anew at the next)
+    for (int t = 0; t < nt; ++t) {
+      std::vector<std::uint32_t>().swap(tf[t]);
+      std::vector<std::uint32_t>().swap(ts[t]);
+    }
   }
   make_rows(n);
   plan_carry(p, labels);
+  // the saved pairs' ids and the id table served plan_carry only: released for the same reason
+  std::vector<SavedIds>().swap(saved_);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(slot_of_id_);
   skin_ = skin;
   index_.adopt(std::move(small_grid), std::move(large_grid), !large_set.empty(), r_ref, r_max, n);
 }

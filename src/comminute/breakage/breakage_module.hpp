@@ -76,6 +76,8 @@ class BreakageModule final : public Module {
 
   BreakageMaterials materials_;
   BreakageOptions opt_;
+  // s: the Rayleigh time below which fragments are density scaled (0: no scaling)
+  double rayleigh_floor(const Simulation& sim) const;
   BreakageFields fields_;
   Rng strength_rng_, placement_rng_;
   StressingEvents events_;

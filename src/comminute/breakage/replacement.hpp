@@ -33,6 +33,10 @@ class Replacement {
     BreakageLedger& ledger;
     EventLog& log;
     FragmentGrowth& growth;
+    // s: fragments whose Rayleigh time t_R is shorter become fines (FloorRule::fines) or get
+    // mass scale (rayleigh_floor / t_R)^2 (FloorRule::density_scaling); 0: no floor
+    double rayleigh_floor;
+    FloorRule floor_rule;
     // A fragment took slot s (parent's fields copied, generation and target set): clear its
     // event and draw its strength.
     std::function<void(std::size_t s)> born;

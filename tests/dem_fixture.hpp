@@ -31,8 +31,8 @@ inline std::unique_ptr<Simulation> make_simulation(const DemSetup& s) {
   pi.cohesion_energy_density = s.cohesion;
   sim->materials.set_pair(0, 0, pi);
   // the [contact] table the models read their keys from
-  const CaseFile contact =
-      CaseFile::parse("normal_stiffness = " + std::to_string(s.linear_stiffness) + "\n" + s.contact_keys);
+  const CaseFile contact = CaseFile::parse(
+      "normal_stiffness = " + std::to_string(s.linear_stiffness) + "\n" + s.contact_keys);
   sim->law = ContactLawRegistry::create(s.law, contact.root());
   if (!s.rolling.empty())
     sim->rolling = RollingResistanceRegistry::create(s.rolling, contact.root());

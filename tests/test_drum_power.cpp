@@ -100,6 +100,14 @@ TEST(DrumPower, HertzMindlinMeanShaftPowerEqualsTheDissipationRateAtSteadyState)
   s.law = "hertz_mindlin";
   const DrumBalance d = drum_balance(s, "hertz_mindlin");
   ASSERT_GT(d.power, 0.0);
+  // The same reasons as for the linear law (fluctuation of the stored energy ~1 %, integration
+  // error of the dashpot work): measured +1.0 % at this step, +1.2 % at half the step. The
+  // total-form spring (tangential = "mindlin") books +4.3 % here, +5.1 % at half the step: the
+  // energy its loaded springs gain as the contact radius grows does not fall with the step.
   EXPECT_NEAR(d.dissipation, d.power, 0.03 * d.power);
   EXPECT_LT(std::abs(d.change), 0.03 * d.power);
+  // The drift of the energy balance (work in - dissipated - change of stored energy) is the
+  // integration error, first order in the step: measured -1.5 % of the work at this step,
+  // -0.7 % at half the step (the total form: -4.6 % and -3.3 %, not converging).
+  EXPECT_LT(std::abs(d.power - d.dissipation - d.change), 0.03 * d.power);
 }

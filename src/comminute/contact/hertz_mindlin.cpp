@@ -5,7 +5,7 @@
 // Keys of [contact]: tangential_damping (bool, default true), tangential ("mindlin_rescale_force",
 // the default: incremental force, rescaled on unloading, Thornton, Cummins & Cleary, Powder
 // Technol. 2013 eq. 18; "mindlin": the total form F_t = -8 G* a xi, LAMMPS `mindlin`, whose
-// energy ledger does not close while loaded contacts change their radius).
+// energy ledger does not close while loaded contacts change their radius); docs/models.md T1.
 #include <cmath>
 
 #include "comminute/contact/tangential_friction.hpp"

@@ -26,8 +26,7 @@ struct TangentialSlots {
   void declare(ContactStateStore& layout, bool dynamic_friction, bool stiffness_history = false) {
     spring = layout.declare_vec3("tangential_spring", SwapRule::negate);
     if (dynamic_friction) sliding = layout.declare_f32("tangential_sliding", SwapRule::keep);
-    if (stiffness_history)
-      stiffness = layout.declare_f64("tangential_stiffness", SwapRule::keep);
+    if (stiffness_history) stiffness = layout.declare_f64("tangential_stiffness", SwapRule::keep);
   }
   float* flag(const StateRef& s) const {
     return sliding == ContactStateStore::none ? nullptr : &s.f32(sliding);

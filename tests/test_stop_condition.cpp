@@ -31,6 +31,21 @@ std::unique_ptr<Simulation> pressed_sphere() {
   return sim;
 }
 
+// Runs `sim` with the one condition `c` on the piston until the condition ends the run (exit
+// status 0); returns the module.
+const StopConditionModule* run_to_stop(Simulation& sim, StopConditionSpec c) {
+  c.label = "stop[0]";
+  c.wall = 1;
+  auto m = std::make_unique<StopConditionModule>(std::vector<StopConditionSpec>{c});
+  const StopConditionModule* stop = m.get();
+  sim.modules.push_back(std::move(m));
+  sim.setup();
+  std::FILE* log = std::tmpfile();
+  EXPECT_EQ(run::run_until(sim, 1.0, nullptr, nullptr, nullptr, log), 0);
+  std::fclose(log);
+  return stop;
+}
+
 }  // namespace
 
 TEST(StopCondition, EndsTheRunAfterTheFirstStepThatReachesTheForce) {
@@ -47,16 +62,8 @@ TEST(StopCondition, EndsTheRunAfterTheFirstStepThatReachesTheForce) {
   ASSERT_GT(first, 100u);  // a real approach, not the first step
   auto sim = pressed_sphere();
   StopConditionSpec c;
-  c.label = "stop[0]";
-  c.wall = 1;
   c.value = limit;
-  auto m = std::make_unique<StopConditionModule>(std::vector<StopConditionSpec>{c});
-  const StopConditionModule* stop = m.get();
-  sim->modules.push_back(std::move(m));
-  sim->setup();
-  std::FILE* log = std::tmpfile();
-  EXPECT_EQ(run::run_until(*sim, 1.0, nullptr, nullptr, nullptr, log), 0);
-  std::fclose(log);
+  const StopConditionModule* stop = run_to_stop(*sim, c);
   EXPECT_EQ(sim->step_count, first);
   ASSERT_TRUE(stop->reached().has_value());
   EXPECT_EQ(stop->reached()->step, first);
@@ -106,17 +113,9 @@ TEST(StopCondition, ADirectionComparesTheCompressiveForceAlongIt) {
               1e-12 * norm(ref->walls[1]->force));
   auto sim = pressed_sphere();
   StopConditionSpec c;
-  c.label = "stop[0]";
-  c.wall = 1;
   c.value = limit;
   c.direction = n;
-  auto m = std::make_unique<StopConditionModule>(std::vector<StopConditionSpec>{c});
-  const StopConditionModule* stop = m.get();
-  sim->modules.push_back(std::move(m));
-  sim->setup();
-  std::FILE* log = std::tmpfile();
-  EXPECT_EQ(run::run_until(*sim, 1.0, nullptr, nullptr, nullptr, log), 0);
-  std::fclose(log);
+  const StopConditionModule* stop = run_to_stop(*sim, c);
   EXPECT_EQ(sim->step_count, first);
   ASSERT_TRUE(stop->reached().has_value());
   EXPECT_GE(stop->reached()->quantity, limit);

@@ -124,10 +124,9 @@ TEST(ContactState, BytesPerContactFollowTheSubModels) {
   ContactPipeline with_breakage;
   EXPECT_EQ(with_breakage.assemble(*law, nullptr, nullptr, breakage).bytes_per_contact(), 45u);
   EXPECT_NE(with_breakage.loading(), nullptr);
-  EXPECT_EQ(
-      with_breakage.layout().slot_names(),
-      (std::vector<std::string>{"tangential_spring", "tangential_stiffness", "loading_max_overlap",
-                                "loading_work", "loading_normal_force"}));
+  EXPECT_EQ(with_breakage.layout().slot_names(),
+            (std::vector<std::string>{"tangential_spring", "loading_max_overlap", "loading_work",
+                                      "loading_normal_force", "tangential_stiffness"}));
   ContactPipeline with_bonds;
   EXPECT_EQ(with_bonds.assemble(*law, nullptr, nullptr, bonds).bytes_per_contact(), 69u);
   // slots are declared while the model is assembled, not after

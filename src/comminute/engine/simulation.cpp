@@ -109,12 +109,29 @@ Vec3 Simulation::pair_frame(std::size_t from, std::size_t seen, const Vec3& x) c
   return ghosts_.to_owner_frame(from, n_owned_, ghosts_.from_owner_frame(seen, n_owned_, x));
 }
 
+void Simulation::rekey_wrapped_wall_contacts() {
+  // a touching wall contact of a wrapped particle is now seen from the particle's new copy: its
+  // spring turns with it (sector) and a wall standing for its images re-keys the feature
+  const auto& moved = ghosts_.wrapped();
+  if (moved.empty()) return;
+  tracker_.rekey_wall_contacts(wall_state_, [&](WallContactRecord& c, std::size_t q) {
+    const auto it = std::lower_bound(
+        moved.begin(), moved.end(), c.id,
+        [](const GhostExchange::Wrapped& w, std::uint64_t id) { return w.id < id; });
+    if (it == moved.end() || it->id != c.id) return;
+    c.feature = walls[c.wall]->feature_after_wrap(c.feature, it->shift);
+    if (ghosts_.map.is_sector())
+      wall_state_.map_vectors(q, [&](const Vec3& v) { return ghosts_.map.vector(v, it->shift); });
+  });
+}
+
 void Simulation::compute_forces() {
   const std::vector<std::uint64_t>* labels = nullptr;
   if (ghosts_.active()) {
     if (tracker_.due(particles, options)) {  // wrap and plan the ghosts anew (docs/models.md)
       tracker_.prepare(particles, options);
       ghosts_.wrap(particles);
+      rekey_wrapped_wall_contacts();
       ghosts_.plan(particles, options.skin);
     }
     ghosts_.append(particles);

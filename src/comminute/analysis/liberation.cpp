@@ -40,10 +40,10 @@ std::size_t spectrum_class(double phi) {
 }
 
 double spectrum_lower(std::size_t c) {
-  return c == 0 ? 0.0 : c == spectrum_classes - 1 ? 1.0 : 0.1 * static_cast<double>(c - 1);
+  return c == 0 ? 0.0 : c == spectrum_classes - 1 ? 1.0 : static_cast<double>(c - 1) / 10;
 }
 double spectrum_upper(std::size_t c) {
-  return c == 0 ? 0.0 : c == spectrum_classes - 1 ? 1.0 : 0.1 * static_cast<double>(c);
+  return c == 0 ? 0.0 : c == spectrum_classes - 1 ? 1.0 : static_cast<double>(c) / 10;
 }
 
 std::vector<std::vector<double>> liberation_spectrum(

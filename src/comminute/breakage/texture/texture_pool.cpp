@@ -82,8 +82,8 @@ void TexturePool::reclaim() {
 }
 
 std::size_t TexturePool::bytes() const {
-  // words, plus the index: a hash node holds the key, the entry and about two pointers
-  return words_.capacity() * sizeof(std::uint64_t) +
+  // packed labels plus the index: a hash node holds the key, the entry and about two pointers
+  return live_bytes() +
          entries_.size() * (sizeof(std::uint64_t) + sizeof(Entry) + 2 * sizeof(void*));
 }
 

@@ -39,7 +39,9 @@ class TexturePool {
   // Ids of the particles that own a texture, ascending.
   std::vector<std::uint64_t> owners() const;
 
-  // Bytes held: packed words (live and not yet reclaimed) plus the index.
+  // Bytes per the live textures: packed labels plus the index (deterministic, so restarts
+  // reproduce it; the words of erased textures, reclaimed once they outnumber the live ones, and
+  // the vector's spare capacity come on top: at most about twice the packed labels).
   std::size_t bytes() const;
   // Bytes of the packed labels of the live textures only.
   std::size_t live_bytes() const { return live_words_ * sizeof(std::uint64_t); }

@@ -1,0 +1,157 @@
+// Texture and liberation from a case file: the example's keys are read and documented, wrong
+// input is refused, and a one-phase textured drop-weight run stays exactly one-phase
+// (issue 12, test 5 in the running engine).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "comminute/analysis/liberation_observer.hpp"
+#include "comminute/breakage/texture/texture_module.hpp"
+#include "comminute/breakage/texture/texture_volume.hpp"
+#include "comminute/core/error.hpp"
+#include "comminute/io/case/breakage_case.hpp"
+#include "comminute/io/case/dem_case.hpp"
+#include "comminute/io/case/texture_case.hpp"
+#include "source_file.hpp"
+#include "temp_dir.hpp"
+
+using namespace comminute;
+
+namespace {
+
+std::string example_text() {
+  std::ifstream in(std::string(COMMINUTE_SOURCE_DIR) +
+                   "/examples/texture/drop_weight_texture.toml");
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The example with `from` replaced by `to` (the text must contain `from`).
+std::string edited(const std::string& from, const std::string& to) {
+  std::string t = example_text();
+  const auto at = t.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) t.replace(at, from.size(), to);
+  return t;
+}
+
+struct Built {
+  io::DemCase dem;
+  breakage::texture::TextureModule* texture = nullptr;
+};
+
+Built build(const std::string& text) {
+  CaseFile f = CaseFile::parse(text, "texture_case.toml");
+  Built b{io::build_dem_case(f.root()), nullptr};
+  io::add_breakage(f.root(), b.dem);
+  b.texture = io::add_texture(f.root(), b.dem);
+  f.reject_unknown();
+  return b;
+}
+
+}  // namespace
+
+TEST(TextureCase, ExampleKeysAreReadAndDocumented) {
+  const std::string doc = comminute::testing::read_source_file("docs/breakage.md"),
+                    case_doc = comminute::testing::read_source_file("docs/case-file.md");
+  CaseFile f = CaseFile::load(std::string(COMMINUTE_SOURCE_DIR) +
+                              "/examples/texture/drop_weight_texture.toml");
+  io::DemCase dem = io::build_dem_case(f.root());
+  ASSERT_NE(io::add_breakage(f.root(), dem), nullptr);
+  ASSERT_NE(io::add_texture(f.root(), dem), nullptr);
+  f.reject_unknown();
+  for (const std::string& path : f.used_keys()) {
+    std::string leaf = path.substr(path.find_last_of('.') + 1);
+    leaf = leaf.substr(0, leaf.find('['));
+    if (path.find('.') == std::string::npos) {
+      EXPECT_NE(case_doc.find("[" + leaf), std::string::npos) << path;
+      continue;
+    }
+    if (path.rfind("materials.", 0) == 0 && path.find('.', 10) == std::string::npos) continue;
+    if (leaf == "breakage" || leaf == "progeny" || leaf == "generator" || leaf == "phases" ||
+        leaf == "grains")
+      continue;  // sub-tables
+    EXPECT_TRUE(doc.find("`" + leaf + "`") != std::string::npos ||
+                case_doc.find("`" + leaf + "`") != std::string::npos)
+        << path << " is not documented";
+  }
+}
+
+TEST(TextureCase, WrongInputIsRefused) {
+  // both an image and a generator
+  EXPECT_THROW(build(edited("[texture]\n", "[texture]\nimage = \"ore.raw\"\n")), InputError);
+  // liberation without texture
+  {
+    std::string t = example_text();
+    const auto a = t.find("[texture]"), b = t.find("[liberation]");
+    t.erase(a, b - a);
+    EXPECT_THROW(build(t), InputError);
+  }
+  // the criterion's relative strengths differ from the phases'
+  EXPECT_THROW(build(edited("relative_strength = [1.0, 2.0]", "relative_strength = [1.0, 3.0]")),
+               InputError);
+  // a grain phase without a phase table, fractions out of range, an unknown key
+  EXPECT_THROW(build(edited("phase = 1\n", "phase = 2\n")), InputError);
+  EXPECT_THROW(build(edited("volume_fraction = 0.233", "volume_fraction = 1.5")), InputError);
+  EXPECT_THROW(build(edited("resolution = 16", "resolution = 16\nresolutoin = 8")), InputError);
+  EXPECT_THROW(build(edited("source = \"domain\"", "source = \"outlets\"")), InputError);
+  // an image whose labels name a phase that is not defined
+  const comminute::testing::TestDir dir;
+  const std::string raw = (dir.path() / "ore.raw").string();
+  breakage::texture::write_raw_texture(
+      raw, breakage::texture::TextureVolume(
+               2, 2, 2, 1e-3, {0, 1, 2, 0, 0, 1, 0, 2},
+               {{"a", 1000.0, 1.0}, {"b", 2000.0, 2.0}, {"c", 3000.0, 1.0}}));
+  std::string text = example_text();
+  const auto g = text.find("[texture.generator]"), l = text.find("[liberation]");
+  text.replace(g, l - g, "");
+  text.replace(text.find("[texture]\n"), 10, "[texture]\nimage = \"" + raw + "\"\n");
+  EXPECT_THROW(build(text), InputError);
+}
+
+// Test 5 in the engine: a one-phase image gives every particle, fragments of every generation
+// included, composition exactly 1 and liberation exactly 1 at every threshold, before and after
+// breakage; the sampled particles take the phase's density.
+TEST(TextureCase, OnePhaseImageThroughBreakage) {
+  const comminute::testing::TestDir dir;
+  const std::string raw = (dir.path() / "one.raw").string();
+  breakage::texture::write_raw_texture(
+      raw, breakage::texture::TextureVolume(8, 8, 8, 1e-3, std::vector<std::uint8_t>(512, 0),
+                                            {{"quartz", 2650.0, 1.0}}));
+  std::string text = example_text();
+  const auto p = text.find("[[texture.phases]]"), l = text.find("[liberation]");
+  text.replace(p, l - p,
+               "[[texture.phases]]\nname = \"quartz\"\ndensity = 2650.0\n"
+               "relative_strength = 1.0\n\n");
+  text.replace(text.find("[texture]\n"), 10, "[texture]\nimage = \"" + raw + "\"\n");
+  text.replace(text.find("relative_strength = [1.0, 2.0]"), 30, "relative_strength = [1.0]");
+  text.replace(text.find("target_phase = 1"), 16, "target_phase = 0");
+  text.replace(text.find("count = 200"), 11, "count = 12");
+  Built b = build(text);
+  ASSERT_NE(b.texture, nullptr);
+  Simulation& sim = *b.dem.sim;
+  io::decide_time_step(b.dem);
+  sim.setup();
+  const analysis::LiberationObserver* lib = nullptr;
+  for (auto& m : sim.modules)
+    if (auto* o = dynamic_cast<const analysis::LiberationObserver*>(m.get())) lib = o;
+  ASSERT_NE(lib, nullptr);
+  const std::vector<double> rho{2650.0};
+  auto check = [&] {
+    const auto ps = lib->particles(sim);
+    EXPECT_EQ(ps.size(), sim.particles.size());
+    for (const auto& q : ps) EXPECT_EQ(q.volume_fraction[0], 1.0);  // exact: one phase
+    for (double theta : {1.0, 0.95, 0.9})
+      EXPECT_EQ(analysis::liberation_degree(ps, rho, 0, theta), 1.0);
+  };
+  check();
+  EXPECT_NEAR(sim.particles.mass[0],
+              2650.0 * 4.0 / 3.0 * M_PI * std::pow(sim.particles.radius[0], 3),
+              1e-12 * sim.particles.mass[0]);  // one product of doubles
+  while (sim.time < 0.0008) sim.step();
+  EXPECT_GT(sim.particles.size(), 12u);  // fragments were born
+  check();
+  EXPECT_EQ(b.texture->pool().size(), sim.particles.size());  // one texture each, none stale
+}

@@ -155,3 +155,38 @@ TEST(TextureCase, OnePhaseImageThroughBreakage) {
   check();
   EXPECT_EQ(b.texture->pool().size(), sim.particles.size());  // one texture each, none stale
 }
+
+// The outlet stream as the source: the particles an outlet removed, with their compositions,
+// over the whole run or only the last `window` seconds.
+TEST(TextureCase, LiberationOfTheOutletStreamOverAWindow) {
+  auto run = [](const std::string& window) {
+    std::string text = edited("source = \"domain\"", "source = \"outlets\"\nwindow = " + window);
+    text.replace(text.find("count = 200"), 11, "count = 30");
+    text +=
+        "\n[[outlets]]\nname = \"side\"\n"
+        "region = { shape = \"box\", lo = [-1.0, -1.0, -1.0], hi = [0.1, 1.0, 1.0] }\n";
+    Built b = build(text);
+    Simulation& sim = *b.dem.sim;
+    io::decide_time_step(b.dem);
+    sim.setup();
+    const std::size_t before = sim.particles.size();
+    for (int s = 0; s < 20; ++s) sim.step();
+    const analysis::LiberationObserver* lib = nullptr;
+    for (auto& m : sim.modules)
+      if (auto* o = dynamic_cast<const analysis::LiberationObserver*>(m.get())) lib = o;
+    EXPECT_NE(lib, nullptr);
+    const auto ps = lib->particles(sim);
+    return std::make_pair(ps, before - sim.particles.size());
+  };
+  const auto [all, removed] = run("0.0");
+  EXPECT_GT(removed, 0u);  // the fill region reaches into the outlet's box
+  ASSERT_EQ(all.size(), removed);
+  for (const auto& q : all) {
+    EXPECT_NEAR(q.volume_fraction[0] + q.volume_fraction[1], 1.0, 1e-15);  // voxel fractions
+    EXPECT_GT(q.mass, 0.0);
+  }
+  // removed in the first step, 19 steps (more than 1e-6 s) ago: outside a window of 1e-6 s
+  const auto [recent, removed_again] = run("1e-6");
+  EXPECT_EQ(removed_again, removed);
+  EXPECT_TRUE(recent.empty());
+}

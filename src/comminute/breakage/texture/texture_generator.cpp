@@ -35,6 +35,8 @@ void boolean_spheres(const GeneratorSpec& s, const GrainSpec& g, double matrix_l
   const auto nx = static_cast<long>(s.nx), ny = static_cast<long>(s.ny),
              nz = static_cast<long>(s.nz);
   const double box = vx * vx * vx * static_cast<double>(nx * ny * nz);
+  if (!(lambda * box < 1e8))
+    throw Error("texture generator: more than 1e8 grains expected (grains too small for the box)");
   const std::uint64_t count = poisson(lambda * box, rng);
   std::vector<std::uint8_t> hit(labels.size(), 0);
   for (std::uint64_t n = 0; n < count; ++n) {

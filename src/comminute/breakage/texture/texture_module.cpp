@@ -57,7 +57,7 @@ double final_radius(const ParticleStore& p, std::size_t i) {
 void TextureModule::sample_new(Simulation& sim, std::size_t i) {
   auto& p = sim.particles;
   const double r = final_radius(p, i);
-  const Cube c = sample_cube(*volume_, opt_.resolution[p.material[i]], r, rng_);
+  const Cube c = sampler_.sample(*volume_, opt_.resolution[p.material[i]], r, rng_);
   pool_.put(p.id[i], c);
   p.field(owner_)[i] = static_cast<double>(p.id[i]);
   set_composition(p, i, c);

@@ -24,6 +24,7 @@
 
 #include "comminute/breakage/texture/texture_inheritance.hpp"
 #include "comminute/breakage/texture/texture_pool.hpp"
+#include "comminute/breakage/texture/texture_sampler.hpp"
 #include "comminute/breakage/texture/texture_volume.hpp"
 #include "comminute/core/rng.hpp"
 #include "comminute/engine/module.hpp"
@@ -73,6 +74,7 @@ class TextureModule final : public Module, public SeriesSource {
   Rng rng_;
   TexturePool pool_;
   TextureInheritance inheritance_;
+  CubeSampler sampler_;
   std::size_t owner_ = 0;
   std::vector<std::size_t> composition_;
   std::uint64_t inherited_ = 0, sampled_ = 0;  // fragments given a texture, particles sampled

@@ -50,13 +50,15 @@ breakage::texture::TextureVolume read_volume(const CaseTable& t,
   s.nx = static_cast<std::size_t>(size[0]);
   s.ny = static_cast<std::size_t>(size[1]);
   s.nz = static_cast<std::size_t>(size[2]);
+  if (size[0] * size[1] * size[2] > 1024.0 * 1024.0 * 1024.0)
+    gen->fail("size", "at most 1024^3 voxels (1 GiB) in all");
   s.voxel_size = gen->number("voxel_size", Limits::positive());
   for (const CaseTable& g : gen->tables("grains")) {
     GrainSpec grain;
     grain.phase = static_cast<std::uint8_t>(
         g.integer("phase", 1, static_cast<std::int64_t>(phases.size()) - 1));
     grain.volume_fraction = g.number("volume_fraction", Limits::open_unit_interval());
-    grain.grain_radius = g.number("grain_radius", Limits::positive());
+    grain.grain_radius = g.number("grain_radius", Limits::at_least(0.5 * s.voxel_size));
     grain.grain_radius_sigma = g.number("grain_radius_sigma", Limits::non_negative(), 0.0);
     s.grains.push_back(grain);
   }

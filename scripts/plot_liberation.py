@@ -7,21 +7,21 @@ Usage: /usr/bin/python3 scripts/plot_liberation.py <output folder> [-o <png fold
 Reads liberation.csv, liberation_spectrum.csv and grade_recovery.csv (docs/outputs.md); columns
 are found by their header names.
 """
-import csv
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+from plot_breakage import plt, read  # same folder: CSV reading and the Agg backend
 
 
-def read(path):
-    if not os.path.exists(path):
-        return []
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
+def finish(fig, ax, xlabel, ylabel, title, path, legend_size=None):
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=legend_size)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
 
 
 def over_time(rows, out):
@@ -35,14 +35,8 @@ def over_time(rows, out):
                            ("liberation_90 [-]", ":")):
             ax.plot(t, [100 * float(r[col]) for r in sel], style,
                     label=f"{phase}, {col.split()[0].split('_')[1]} %")
-    ax.set_xlabel("time (ms)")
-    ax.set_ylabel("liberation degree (%)")
-    ax.set_title("Liberation over time (all sizes)")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "liberation_time.png"), dpi=120)
-    plt.close(fig)
+    finish(fig, ax, "time (ms)", "liberation degree (%)", "Liberation over time (all sizes)",
+           os.path.join(out, "liberation_time.png"), 7)
 
 
 def by_size(rows, out):
@@ -53,14 +47,8 @@ def by_size(rows, out):
         pr = [r for r in sel if r["phase [-]"] == phase][1:]  # the first row is all sizes
         x = [1e3 * (float(r["size_lower [m]"]) * float(r["size_upper [m]"])) ** 0.5 for r in pr]
         ax.semilogx(x, [100 * float(r["liberation_95 [-]"]) for r in pr], marker="o", label=phase)
-    ax.set_xlabel("size class (geometric mean, mm)")
-    ax.set_ylabel("liberation at 95 % (%)")
-    ax.set_title(f"Liberation by size, t = {last * 1e3:.3g} ms")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend()
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "liberation_size.png"), dpi=120)
-    plt.close(fig)
+    finish(fig, ax, "size class (geometric mean, mm)", "liberation at 95 % (%)",
+           f"Liberation by size, t = {last * 1e3:.3g} ms", os.path.join(out, "liberation_size.png"))
 
 
 def spectrum(rows, out):
@@ -76,14 +64,8 @@ def spectrum(rows, out):
     ax.set_xticks(range(12))
     ax.set_xticklabels(["0", "-10", "-20", "-30", "-40", "-50", "-60", "-70", "-80", "-90",
                         "<100", "100"], fontsize=7)
-    ax.set_xlabel("target-phase volume fraction class (%)")
-    ax.set_ylabel("mass in class (%)")
-    ax.set_title("Liberation spectrum (last sample)")
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "liberation_spectrum.png"), dpi=120)
-    plt.close(fig)
+    finish(fig, ax, "target-phase volume fraction class (%)", "mass in class (%)",
+           "Liberation spectrum (last sample)", os.path.join(out, "liberation_spectrum.png"), 7)
 
 
 def grade_recovery(rows, out):

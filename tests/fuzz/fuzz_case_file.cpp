@@ -1,6 +1,6 @@
 // Fuzzes the case-file loader: TOML text -> CaseFile (UTF-8 guard, toml++, key checks) -> the DEM
-// case, breakage, texture and [output] readers -> unknown keys -> fingerprint. Any input must end in a
-// built case or an InputError/Error, never in a crash, a sanitizer report or a hang.
+// case, breakage, texture and [output] readers -> unknown keys -> fingerprint. Any input must end
+// in a built case or an InputError/Error, never in a crash, a sanitizer report or a hang.
 #include <cstddef>
 #include <cstdint>
 #include <string_view>

@@ -190,3 +190,34 @@ TEST(TextureCase, LiberationOfTheOutletStreamOverAWindow) {
   EXPECT_EQ(removed_again, removed);
   EXPECT_TRUE(recent.empty());
 }
+
+// The texture feeds the composition criterion: an ore that is all phase 1, a thousand times
+// stronger than phase 0, does not break at an impact that breaks the same particles when they
+// carry no texture (composition.0 = 1 by default).
+TEST(TextureCase, TextureFeedsTheCompositionCriterion) {
+  const comminute::testing::TestDir dir;
+  const std::string raw = (dir.path() / "strong.raw").string();
+  breakage::texture::write_raw_texture(
+      raw, breakage::texture::TextureVolume(8, 8, 8, 1e-3, std::vector<std::uint8_t>(512, 1),
+                                            {{"weak", 2650.0, 1.0}, {"strong", 2650.0, 1000.0}}));
+  std::string text = example_text();
+  const auto g = text.find("[texture.generator]"), l = text.find("[liberation]");
+  text.replace(g, l - g, "");
+  text.replace(text.find("[texture]\n"), 10, "[texture]\nimage = \"" + raw + "\"\n");
+  text.replace(text.find("relative_strength = [1.0, 2.0]"), 30,
+               "relative_strength = [1.0, 1000.0]");
+  text.replace(text.find("relative_strength = 2.0"), 23, "relative_strength = 1000.0");
+  text.replace(text.find("count = 200"), 11, "count = 12");
+  std::string plain = text;
+  plain.erase(plain.find("[texture]"), plain.find("[[walls]]") - plain.find("[texture]"));
+  auto broken = [](const std::string& t) {
+    Built b = build(t);
+    Simulation& sim = *b.dem.sim;
+    io::decide_time_step(b.dem);
+    sim.setup();
+    while (sim.time < 0.0008) sim.step();
+    return sim.particles.size() > 12;
+  };
+  EXPECT_TRUE(broken(plain));  // F_crit = F_CS: the 20 m/s impact (~2 kN) breaks them
+  EXPECT_FALSE(broken(text));  // F_crit = 1000 F_CS
+}

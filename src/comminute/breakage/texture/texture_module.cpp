@@ -17,7 +17,10 @@ TextureModule::TextureModule(std::shared_ptr<const TextureVolume> volume, Textur
       opt_(std::move(opt)),
       rng_(seed, rng_stream::texture),
       pool_(volume_->phases().size()),
-      inheritance_(*std::max_element(opt_.resolution.begin(), opt_.resolution.end())),
+      inheritance_(opt_.resolution.empty()
+                       ? 1
+                       : std::max<std::size_t>(
+                             1, *std::max_element(opt_.resolution.begin(), opt_.resolution.end()))),
       rows_({{"time", "s"},
              {"textured_particles", "-"},
              {"pool_bytes", "B"},

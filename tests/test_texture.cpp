@@ -17,6 +17,7 @@
 #include "comminute/breakage/texture/texture_pool.hpp"
 #include "comminute/breakage/texture/texture_sampler.hpp"
 #include "comminute/breakage/texture/texture_volume.hpp"
+#include "comminute/breakage/texture/tiff_stack.hpp"
 #include "comminute/core/error.hpp"
 #include "comminute/core/rng.hpp"
 
@@ -391,4 +392,24 @@ TEST(Liberation, OnePhaseTextureChangesNothing) {
     EXPECT_EQ(analysis::liberation_degree(after, rho, 0, theta) -
                   analysis::liberation_degree(before, rho, 0, theta),
               0.0);
+}
+
+// A TIFF stack written by another program (Pillow 9.4, tests/data/texture/stack.tif: 3 pages of
+// 5 x 4 pixels, value (x + 2y + 3z) mod 3) reads back voxel by voxel.
+TEST(TextureVolume, TiffStackFromPillow) {
+  const std::vector<Phase> three{{"a", 1000.0, 1.0}, {"b", 2000.0, 1.0}, {"c", 3000.0, 1.0}};
+  const TextureVolume v =
+      read_tiff_texture(std::string(COMMINUTE_TEST_DATA) + "/texture/stack.tif", 1e-3, three);
+  ASSERT_EQ(v.nx(), 5u);
+  ASSERT_EQ(v.ny(), 4u);
+  ASSERT_EQ(v.nz(), 3u);
+  for (std::size_t z = 0; z < 3; ++z)
+    for (std::size_t y = 0; y < 4; ++y)
+      for (std::size_t x = 0; x < 5; ++x) EXPECT_EQ(v.label(x, y, z), (x + 2 * y + 3 * z) % 3);
+  // labels 0-2 with two phases defined, and a file that is not a TIFF, are refused
+  EXPECT_THROW(read_tiff_texture(std::string(COMMINUTE_TEST_DATA) + "/texture/stack.tif", 1e-3,
+                                 two_phases()),
+               Error);
+  EXPECT_THROW(read_tiff_texture(std::string(COMMINUTE_SOURCE_DIR) + "/README.md", 1e-3, three),
+               Error);
 }

@@ -221,3 +221,25 @@ TEST(TextureCase, TextureFeedsTheCompositionCriterion) {
   EXPECT_TRUE(broken(plain));  // F_crit = F_CS: the 20 m/s impact (~2 kN) breaks them
   EXPECT_FALSE(broken(text));  // F_crit = 1000 F_CS
 }
+
+// A TIFF stack as the image: needs voxel_size (TIFF has no physical size), which a raw image
+// must not have.
+TEST(TextureCase, TiffStackImage) {
+  const std::string tif = std::string(COMMINUTE_TEST_DATA) + "/texture/stack.tif";
+  std::string text = example_text();
+  const auto g = text.find("[texture.generator]"), l = text.find("[liberation]");
+  text.replace(
+      g, l - g,
+      "[[texture.phases]]\nname = \"third\"\ndensity = 3000.0\nrelative_strength = 1.0\n\n");
+  text.replace(text.find("relative_strength = [1.0, 2.0]"), 30,
+               "relative_strength = [1.0, 2.0, 1.0]");
+  std::string no_size = text;
+  no_size.replace(no_size.find("[texture]\n"), 10, "[texture]\nimage = \"" + tif + "\"\n");
+  EXPECT_THROW(build(no_size), InputError);
+  text.replace(text.find("[texture]\n"), 10,
+               "[texture]\nimage = \"" + tif + "\"\nvoxel_size = 1e-3\n");
+  const Built b = build(text);
+  ASSERT_NE(b.texture, nullptr);
+  EXPECT_EQ(b.texture->volume().nz(), 3u);
+  EXPECT_EQ(b.texture->volume().phases().size(), 3u);
+}

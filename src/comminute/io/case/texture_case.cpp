@@ -6,6 +6,7 @@
 #include "comminute/breakage/breakage_module.hpp"
 #include "comminute/breakage/criteria/composition_peak_force.hpp"
 #include "comminute/breakage/texture/texture_generator.hpp"
+#include "comminute/breakage/texture/tiff_stack.hpp"
 #include "comminute/core/error.hpp"
 
 namespace comminute::io {
@@ -31,7 +32,16 @@ breakage::texture::TextureVolume read_volume(const CaseTable& t,
     t.fail("image", "give exactly one of image (a raw voxel file) and [texture.generator]");
   if (!gen) {
     const auto path = t.input_file("image");
+    const std::string ext = path.extension().string();
+    const bool tiff = ext == ".tif" || ext == ".tiff" || ext == ".TIF" || ext == ".TIFF";
+    if (tiff != t.has("voxel_size"))
+      t.fail(tiff ? "image" : "voxel_size",
+             tiff ? "a TIFF stack needs voxel_size (m): TIFF carries no physical size"
+                  : "voxel_size is for TIFF stacks; a raw image has it in its header");
     try {
+      if (tiff)
+        return read_tiff_texture(path.string(), t.number("voxel_size", Limits::positive()),
+                                 std::move(phases));
       return read_raw_texture(path.string(), std::move(phases));
     } catch (const InputError&) {
       throw;

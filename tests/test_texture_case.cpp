@@ -243,3 +243,56 @@ TEST(TextureCase, TiffStackImage) {
   EXPECT_EQ(b.texture->volume().nz(), 3u);
   EXPECT_EQ(b.texture->volume().phases().size(), 3u);
 }
+
+// Masses follow the phases through breakage: the sampled particles have m = rho(C) V exactly; the
+// fragments of one parent share its mass in proportion to rho(C_j) V_j (so m_j / (rho_j V_j) is one
+// number per parent), and the particles plus the fines booked as mass keep the initial mass.
+TEST(TextureCase, FragmentMassesFollowTheirPhases) {
+  std::string text = edited("count = 200", "count = 12");
+  Built b = build(text);
+  Simulation& sim = *b.dem.sim;
+  io::decide_time_step(b.dem);
+  sim.setup();
+  breakage::BreakageModule* brk = nullptr;
+  for (auto& m : sim.modules)
+    if (auto* x = dynamic_cast<breakage::BreakageModule*>(m.get())) brk = x;
+  ASSERT_NE(brk, nullptr);
+  const auto& p = sim.particles;
+  const double rho[2] = {2650.0, 5180.0};
+  auto density = [&](std::size_t i) {
+    return p.field(p.field_index("composition.0"))[i] * rho[0] +
+           p.field(p.field_index("composition.1"))[i] * rho[1];
+  };
+  auto final_volume = [&](std::size_t i) {
+    const double r = std::max(p.radius[i], p.field(p.field_index("breakage.target_radius"))[i]);
+    return 4.0 / 3.0 * M_PI * r * r * r;
+  };
+  const double m0 = p.total_mass();
+  for (std::size_t i = 0; i < p.size(); ++i)  // a product and a sum of two: a few ulp
+    EXPECT_NEAR(p.mass[i], density(i) * final_volume(i), 1e-14 * p.mass[i]);
+  while (sim.time < 0.0008) sim.step();
+  ASSERT_GT(p.size(), 12u);
+  double fines = 0;
+  for (double f : brk->fines_mass()) fines += f;
+  // mass: the rule keeps each parent's sum up to rounding, over a few hundred breakages
+  EXPECT_NEAR(p.total_mass() + fines, m0, 1e-12 * m0);
+  std::map<double, double> factor;  // by parent id
+  std::size_t siblings = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double parent = p.field(p.field_index("breakage.parent_id"))[i];
+    if (parent == 0) continue;
+    const double f = p.mass[i] / (density(i) * final_volume(i));
+    const auto [it, fresh] = factor.emplace(parent, f);
+    if (!fresh) {
+      ++siblings;
+      // voxel fractions are ratios of integers: the same density as in the rule, to rounding
+      EXPECT_NEAR(f, it->second, 1e-12);
+    }
+  }
+  EXPECT_GT(siblings, 100u);
+  // The scale M / sum(rho_j V_j) is 1 but for voxel rounding: the blocks cover the parent's 16^3
+  // voxels in proportion to V_j, each block count rounded by under one voxel; with ~50 fragments
+  // that is < 50 of 4096 voxels, times a density contrast below 2: under 2.5 %.
+  EXPECT_GE(factor.size(), 5u);
+  for (const auto& [parent, f] : factor) EXPECT_NEAR(f, 1.0, 0.025) << parent;
+}

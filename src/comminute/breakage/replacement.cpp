@@ -109,7 +109,11 @@ void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t paren
   for (const auto& f : progeny.fragments) {
     radii.push_back(0.5 * f.diameter);
     masses.push_back(f.mass);
-    inertia.push_back(0.4 * f.mass * 0.25 * f.diameter * f.diameter);
+  }
+  if (ctx.mass_rule) ctx.mass_rule->share(p, parent, radii, masses);
+  for (std::size_t k = 0; k < radii.size(); ++k) {
+    const double df = progeny.fragments[k].diameter;
+    inertia.push_back(0.4 * masses[k] * 0.25 * df * df);
   }
   WallOverlap walls = [&sim](const Vec3& x, double r) {
     double worst = -r;
@@ -152,9 +156,9 @@ void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t paren
     init.flags = f.fines ? pflag::unbreakable : 0;
     const bool growing = placed[k].r < radii[k];
     if (growing) init.flags |= pflag::growing;
-    const std::uint64_t id = p.add_with_mass(init, f.mass);
+    const std::uint64_t id = p.add_with_mass(init, masses[k]);
     fragments_added_.push_back({id, radii[k]});
-    ctx.log.add_fragment({sim.time, p.id[parent], id, f.diameter, f.mass, generation, f.fines});
+    ctx.log.add_fragment({sim.time, p.id[parent], id, f.diameter, masses[k], generation, f.fines});
     const std::size_t s = p.size() - 1;
     p.inertia[s] = inertia[k];  // of the full-size sphere from the start
     for (std::size_t q = 0; q < parent_fields.size(); ++q) p.field(q)[s] = parent_fields[q];
@@ -163,7 +167,7 @@ void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t paren
     p.field(ctx.fields.target)[s] = growing ? radii[k] : 0.0;
     ctx.born(s);  // every fragment draws its own strength for its size
     if (growing) ctx.growth.started();
-    ke_in += 0.5 * f.mass * norm2(vel.v[k]) + 0.5 * inertia[k] * norm2(vel.w[k]);
+    ke_in += 0.5 * masses[k] * norm2(vel.v[k]) + 0.5 * inertia[k] * norm2(vel.w[k]);
     if (f.fines)
       ++rec.fines_particles;
     else

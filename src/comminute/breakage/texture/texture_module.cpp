@@ -104,15 +104,21 @@ void TextureModule::update(Simulation& sim) {
       for (std::size_t s : slots) sample_new(sim, s);
       continue;
     }
-    const Cube parent_cube = pool_.get(parent);
-    std::vector<double> volumes;
-    for (std::size_t s : slots) volumes.push_back(std::pow(final_radius(p, s), 3));
-    auto split = inheritance_.split(parent_cube, volumes, composition_.size());
+    std::vector<Cube> cubes;
+    const auto done = pending_.find(parent);  // split when the parent broke (share())
+    if (done != pending_.end() && done->second.size() == slots.size()) {
+      cubes = std::move(done->second);
+    } else {
+      std::vector<double> volumes;
+      for (std::size_t s : slots) volumes.push_back(std::pow(final_radius(p, s), 3));
+      cubes = inheritance_.split(pool_.get(parent), volumes, composition_.size()).cubes;
+    }
+    if (done != pending_.end()) pending_.erase(done);
     for (std::size_t k = 0; k < slots.size(); ++k) {
       const std::size_t s = slots[k];
-      pool_.put(p.id[s], split.cubes[k]);
+      pool_.put(p.id[s], cubes[k]);
       p.field(owner_)[s] = static_cast<double>(p.id[s]);
-      set_composition(p, s, split.cubes[k]);
+      set_composition(p, s, cubes[k]);
       ++inherited_;
     }
     pool_.erase(parent);
@@ -127,6 +133,29 @@ void TextureModule::update(Simulation& sim) {
     for (std::uint64_t id : pool_.owners())
       if (!alive.count(id)) pool_.erase(id);
   }
+}
+
+void TextureModule::share(const ParticleStore& p, std::size_t parent,
+                          const std::vector<double>& radii, std::vector<double>& masses) {
+  const std::uint64_t id = p.id[parent];
+  if (!opt_.density_from_phases || !pool_.has(id) || radii.empty()) return;
+  std::vector<double> volumes;
+  for (double r : radii) volumes.push_back(r * r * r);
+  auto split = inheritance_.split(pool_.get(id), volumes, composition_.size());
+  double total = 0, weight = 0;
+  std::vector<double> w(radii.size());
+  for (std::size_t j = 0; j < radii.size(); ++j) {
+    const auto counts = phase_counts(split.cubes[j], composition_.size());
+    double rho = 0;  // docs/models.md eq. T4
+    for (std::size_t k = 0; k < counts.size(); ++k)
+      rho += static_cast<double>(counts[k]) * volume_->phases()[k].density;
+    w[j] = volumes[j] * rho / static_cast<double>(split.cubes[j].labels.size());
+    weight += w[j];
+    total += masses[j];
+  }
+  if (weight > 0)
+    for (std::size_t j = 0; j < radii.size(); ++j) masses[j] = total * w[j] / weight;
+  pending_[id] = std::move(split.cubes);
 }
 
 void TextureModule::setup(Simulation& sim) {

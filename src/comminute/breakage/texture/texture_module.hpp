@@ -15,13 +15,18 @@
 //                                parent's id) split the parent's cube (texture_inheritance.hpp),
 //                                in proportion to their final volumes; the parent's texture is
 //                                then dropped from the pool. Every generation inherits.
-// Fragment masses stay those of the replacement (the parent's mass shared by volume, so mass and
-// momentum are exact); their compositions come from the texture.
+// With density_from_phases the module is also the breakage module's FragmentMassRule: when a
+// parent breaks it splits the parent's texture at once and shares the fragments' mass (their sum
+// unchanged) in proportion to V_j rho_j, rho_j = sum_k phi_jk rho_k of fragment j's cube, before
+// the fragments are placed and given velocities; the cubes are handed to the fragments at the
+// end of the step.
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <vector>
 
+#include "comminute/breakage/fragment_mass_rule.hpp"
 #include "comminute/breakage/texture/texture_inheritance.hpp"
 #include "comminute/breakage/texture/texture_pool.hpp"
 #include "comminute/breakage/texture/texture_sampler.hpp"
@@ -41,7 +46,7 @@ struct TextureOptions {
   double output_interval = 0;       // s between rows of texture.csv (0: every 1000 steps)
 };
 
-class TextureModule final : public Module, public SeriesSource {
+class TextureModule final : public Module, public SeriesSource, public FragmentMassRule {
  public:
   TextureModule(std::shared_ptr<const TextureVolume> volume, TextureOptions opt,
                 std::uint64_t seed);
@@ -63,6 +68,10 @@ class TextureModule final : public Module, public SeriesSource {
   const TexturePool& pool() const { return pool_; }
   // Gives every particle that needs one its texture (what the hooks call).
   void update(Simulation& sim);
+  // FragmentMassRule: splits the parent's texture now and shares the mass by V_j rho_j.
+  void share(const ParticleStore& p, std::size_t parent, const std::vector<double>& radii,
+             std::vector<double>& masses) override;
+  bool density_from_phases() const { return opt_.density_from_phases; }
 
  private:
   bool textured(const ParticleStore& p, std::size_t i) const;
@@ -77,6 +86,7 @@ class TextureModule final : public Module, public SeriesSource {
   CubeSampler sampler_;
   std::size_t owner_ = 0;
   std::vector<std::size_t> composition_;
+  std::map<std::uint64_t, std::vector<Cube>> pending_;  // split at breakage, by parent id
   std::uint64_t inherited_ = 0, sampled_ = 0;  // fragments given a texture, particles sampled
   SampleRows rows_;                            // texture.csv
 };

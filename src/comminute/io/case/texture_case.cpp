@@ -132,6 +132,7 @@ breakage::texture::TextureModule* add_texture(const CaseTable& root, DemCase& de
   auto module = std::make_unique<breakage::texture::TextureModule>(volume, opt, sim.seed);
   module->register_fields(sim.particles);
   auto* out = module.get();
+  if (breakage && opt.density_from_phases) breakage->set_fragment_mass_rule(out);
   sim.modules.push_back(std::move(module));
   if (lib) {
     analysis::LiberationOptions lo;

@@ -7,6 +7,7 @@
 #include "comminute/core/error.hpp"
 #include "comminute/io/case/bonds_case.hpp"
 #include "comminute/io/case/breakage_case.hpp"
+#include "comminute/io/case/texture_case.hpp"
 
 namespace comminute::app {
 
@@ -61,6 +62,7 @@ LoadedCase load_dem_case(const std::filesystem::path& path) {
                                           : io::default_output_options(file.path());
   io::add_bonds(file.root(), dem);
   io::add_breakage(file.root(), dem);
+  io::add_texture(file.root(), dem);
   io::decide_time_step(dem);
   file.reject_unknown();
   output.case_fingerprint = file.fingerprint();

@@ -99,7 +99,8 @@ Replacement::Context BreakageModule::replacement_context(Simulation& sim) {
             events_.clear(sim.particles, s);
             sim.particles.field(fields_.initialized)[s] = 0;
             initialize_particle(sim, s);
-          }};
+          },
+          mass_rule_};
 }
 
 void BreakageModule::end_of_step(Simulation& sim) {

@@ -136,8 +136,13 @@ void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t paren
   for (const auto& f : progeny.fragments) {
     scales.push_back(mass_scale(sim, ctx, f.diameter, p.material[parent]));
     radii.push_back(0.5 * f.diameter);
-    masses.push_back(scales.back() * f.mass);
-    inertia.push_back(0.4 * masses.back() * 0.25 * f.diameter * f.diameter);
+    masses.push_back(f.mass);
+  }
+  if (ctx.mass_rule) ctx.mass_rule->share(p, parent, radii, masses);
+  for (std::size_t k = 0; k < radii.size(); ++k) {
+    masses[k] *= scales[k];  // inertial
+    const double df = progeny.fragments[k].diameter;
+    inertia.push_back(0.4 * masses[k] * 0.25 * df * df);
   }
   WallOverlap walls = [&sim](const Vec3& x, double r) {
     double worst = -r;
@@ -184,7 +189,8 @@ void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t paren
     if (growing) init.flags |= pflag::growing;
     const std::uint64_t id = p.add_with_mass(init, masses[k]);
     fragments_added_.push_back({id, radii[k]});
-    ctx.log.add_fragment({sim.time, p.id[parent], id, f.diameter, f.mass, generation, f.fines});
+    ctx.log.add_fragment(
+        {sim.time, p.id[parent], id, f.diameter, masses[k] / scales[k], generation, f.fines});
     const std::size_t s = p.size() - 1;
     p.inertia[s] = inertia[k];  // of the full-size sphere from the start
     for (std::size_t q = 0; q < parent_fields.size(); ++q) p.field(q)[s] = parent_fields[q];

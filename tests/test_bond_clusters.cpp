@@ -1,0 +1,254 @@
+// Bonded grains: packing a shape with sub-spheres (fills it, stays inside, right equivalent
+// diameter), bonds only within the gap tolerance, connected components against a brute-force
+// count, the grain-broken threshold in a pulled chain.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "comminute/bonds/cluster_packing.hpp"
+#include "comminute/bonds/fragments.hpp"
+#include "comminute/bonds/grain_breakage_module.hpp"
+#include "dem_fixture.hpp"
+
+using namespace comminute;
+using namespace comminute::testing;
+using bonds::GrainTemplate;
+
+namespace {
+
+// Checks what every packing must satisfy: each sub-sphere inside the shape (its centre at least
+// r from the surface) and no overlap beyond the relaxation's stopping tolerance.
+void expect_valid_packing(const bonds::ClusterShape& shape, const GrainTemplate& g) {
+  for (const Vec3& c : g.centres)
+    // 1e-9 r: push_inside stops 1e-9 r inside; the distance is exact to ~1e-12 of the shape
+    EXPECT_LE(shape.signed_distance(c), -g.radius * (1 - 1e-8));
+  for (std::size_t i = 0; i < g.centres.size(); ++i)
+    for (std::size_t j = i + 1; j < g.centres.size(); ++j)
+      // 1e-4 r: the relaxation stops when the worst overlap is below this (half moved per pass)
+      EXPECT_GE(norm(g.centres[j] - g.centres[i]), 2 * g.radius * (1 - 1e-4));
+}
+
+IndexedMesh cube_mesh(double side) {
+  IndexedMesh m;
+  const double h = 0.5 * side;
+  for (int k = 0; k < 8; ++k)
+    m.vertices.push_back({(k & 1) ? h : -h, (k & 2) ? h : -h, (k & 4) ? h : -h});
+  // outward-facing (counter-clockwise seen from outside)
+  m.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                 {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  return m;
+}
+
+}  // namespace
+
+TEST(BondClusters, EllipsoidDistanceIsExactOnTheAxesAndZeroOnTheSurface) {
+  const Vec3 e{3e-3, 1.5e-3, 1.1e-3};
+  // from the centre the nearest surface point is the end of the smallest semi-axis; 1e-9 m (1e-6
+  // of the size): a point on a symmetry plane is moved off it by 1e-9 of the smallest semi-axis,
+  // and the root then lies where F(t) is steep, resolved to ~1e-7 of the size
+  EXPECT_NEAR(bonds::ellipsoid_signed_distance(e, {}), -1.1e-3, 1e-9);
+  // outside on the long axis: the distance to the tip
+  EXPECT_NEAR(bonds::ellipsoid_signed_distance(e, {4e-3, 0, 0}), 1e-3, 1e-12);
+  // points of the surface: distance zero (bisection to double precision: 1e-12 of the size)
+  Rng rng(5, 0);
+  for (int k = 0; k < 100; ++k) {
+    const double th = std::acos(rng.uniform(-1, 1)), ph = rng.uniform(0, 2 * std::numbers::pi);
+    const Vec3 s{e.x * std::sin(th) * std::cos(ph), e.y * std::sin(th) * std::sin(ph),
+                 e.z * std::cos(th)};
+    EXPECT_NEAR(bonds::ellipsoid_signed_distance(e, s), 0, 1e-12);
+    // moved out along the surface normal by h: the distance is h (the normal line's foot)
+    Vec3 n{s.x / (e.x * e.x), s.y / (e.y * e.y), s.z / (e.z * e.z)};
+    n = n / norm(n);
+    EXPECT_NEAR(bonds::ellipsoid_signed_distance(e, s + 1e-4 * n), 1e-4, 1e-12);
+  }
+}
+
+TEST(BondClusters, SpherePackingFillsTheShape) {
+  const auto shape = bonds::make_sphere_shape(4e-3);
+  // the equivalent diameter of a sphere is its diameter (round-off only)
+  EXPECT_NEAR(shape->equivalent_diameter(), 4e-3, 1e-15);
+  Rng rng(11, 0);
+  const GrainTemplate g = bonds::pack_cluster(*shape, 40, 0.6, rng);
+  expect_valid_packing(*shape, g);
+  // at most the target by construction; at least 0.5: random packings of 40 equal spheres in a
+  // sphere jam near 0.55-0.6 (wall effect of a container 4 sphere diameters wide), and the
+  // relaxation shrinks the radius by 1 % steps only when jammed
+  EXPECT_LE(g.solid_fraction(), 0.6 + 1e-12);
+  EXPECT_GE(g.solid_fraction(), 0.5);
+  RecordProperty("solid_fraction", std::to_string(g.solid_fraction()));
+}
+
+TEST(BondClusters, EllipsoidPackingOfARiceGrain) {
+  const double l = 6e-3, w = 3e-3, t = 2.2e-3;
+  const auto shape = bonds::make_ellipsoid_shape(l, w, t);
+  // d_eq = (L W T)^{1/3} for an ellipsoid (volume π L W T / 6)
+  EXPECT_NEAR(shape->equivalent_diameter(), std::cbrt(l * w * t), 1e-15);
+  Rng rng(12, 0);
+  for (int n : {10, 30}) {
+    const GrainTemplate g = bonds::pack_cluster(*shape, n, 0.6, rng);
+    expect_valid_packing(*shape, g);
+    // few spheres in a thin shape jam lower (the 2.2 mm thickness holds two sub-spheres at most)
+    EXPECT_GE(g.solid_fraction(), 0.4) << n;
+    EXPECT_LE(g.solid_fraction(), 0.6 + 1e-12) << n;
+    RecordProperty("solid_fraction_" + std::to_string(n), std::to_string(g.solid_fraction()));
+  }
+}
+
+TEST(BondClusters, MeshPackingStaysInsideACube) {
+  const auto shape = bonds::make_mesh_shape(cube_mesh(4e-3));
+  // divergence theorem over 12 triangles: exact to round-off
+  EXPECT_NEAR(shape->volume(), 64e-9, 1e-20);
+  EXPECT_NEAR(shape->signed_distance({}), -2e-3, 1e-15);
+  EXPECT_NEAR(shape->signed_distance({3e-3, 0, 0}), 1e-3, 1e-15);
+  EXPECT_NEAR(shape->signed_distance({3e-3, 3e-3, 0}), std::sqrt(2.0) * 1e-3, 1e-15);
+  Rng rng(13, 0);
+  const GrainTemplate g = bonds::pack_cluster(*shape, 30, 0.55, rng);
+  expect_valid_packing(*shape, g);
+  // 0.4: 30 spheres in a cube three sphere diameters wide jam lower than in a sphere (corners and
+  // flat faces hold loosely ordered wall layers)
+  EXPECT_GE(g.solid_fraction(), 0.4);
+  RecordProperty("solid_fraction", std::to_string(g.solid_fraction()));
+}
+
+TEST(BondClusters, BondsOnlyWithinTheGapTolerance) {
+  const auto shape = bonds::make_ellipsoid_shape(6e-3, 3e-3, 2.2e-3);
+  Rng rng(14, 0);
+  const GrainTemplate g = bonds::pack_cluster(*shape, 30, 0.6, rng);
+  const double gap = 0.05 * g.radius;
+  const auto pairs = bonds::pairs_within_gap(g.centres, g.radius, gap);
+  std::size_t expected = 0;
+  for (std::size_t i = 0; i < g.centres.size(); ++i)
+    for (std::size_t j = i + 1; j < g.centres.size(); ++j)
+      expected += norm(g.centres[j] - g.centres[i]) - 2 * g.radius <= gap ? 1 : 0;
+  EXPECT_EQ(pairs.size(), expected);
+  for (const auto& p : pairs) EXPECT_LE(norm(g.centres[p[1]] - g.centres[p[0]]) - 2 * g.radius, gap);
+  // a dense packing joins its spheres into one piece within a few percent of r
+  EXPECT_EQ(bonds::count_components(g.centres.size(), pairs), 1u);
+}
+
+TEST(BondClusters, ComponentsMatchABruteForceCountAfterRandomFailures) {
+  Rng rng(15, 0);
+  const std::size_t n = 300;
+  std::vector<std::uint32_t> a, b;
+  for (std::size_t k = 0; k < 600; ++k) {
+    a.push_back(static_cast<std::uint32_t>(rng.below(n)));
+    b.push_back(static_cast<std::uint32_t>(rng.below(n)));
+  }
+  for (int round = 0; round < 6; ++round) {
+    // fail a random third of the bonds
+    std::vector<std::uint32_t> a2, b2;
+    for (std::size_t k = 0; k < a.size(); ++k)
+      if (rng.uniform() > 1.0 / 3) {
+        a2.push_back(a[k]);
+        b2.push_back(b[k]);
+      }
+    a = a2;
+    b = b2;
+    std::uint32_t count = 0;
+    const auto label = bonds::component_labels(n, a, b, count);
+    // brute force: propagate the smallest node index over the edges until nothing changes
+    std::vector<std::size_t> lowest(n);
+    for (std::size_t i = 0; i < n; ++i) lowest[i] = i;
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (std::size_t k = 0; k < a.size(); ++k) {
+        const std::size_t m = std::min(lowest[a[k]], lowest[b[k]]);
+        if (lowest[a[k]] != m || lowest[b[k]] != m) changed = true;
+        lowest[a[k]] = lowest[b[k]] = m;
+      }
+    }
+    std::size_t brute = 0;
+    for (std::size_t i = 0; i < n; ++i) brute += lowest[i] == i ? 1 : 0;
+    EXPECT_EQ(count, brute);
+    // the same partition: same label exactly when the same lowest member
+    for (std::size_t i = 0; i < n; i += 7)
+      for (std::size_t j = 0; j < n; j += 5)
+        EXPECT_EQ(label[i] == label[j], lowest[i] == lowest[j]);
+  }
+}
+
+namespace {
+
+// Pulls one particle along +x with a force ramp and damps every particle's motion.
+class Pull final : public Module {
+ public:
+  Pull(std::uint64_t id, double rate, double c) : id_(id), rate_(rate), c_(c) {}
+  std::string name() const override { return "pull"; }
+  void post_force(Simulation& sim) override {
+    auto& p = sim.particles;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.id[i] == id_) p.f[i].x += rate_ * sim.time;
+      p.f[i] -= c_ * p.v[i];
+    }
+  }
+
+ private:
+  std::uint64_t id_;
+  double rate_, c_;
+};
+
+// A grain of four spheres in a row, the first clamped, the last pulled until one bond fails;
+// returns the module after 0.05 s more (the pieces apart).
+struct PulledChain {
+  std::unique_ptr<Simulation> sim;
+  bonds::BondsModule* bonds = nullptr;
+  bonds::GrainBreakageModule* grains = nullptr;
+  explicit PulledChain(double broken_below) {
+    sim = make_simulation(DemSetup{});
+    const double r = 1e-3;
+    const std::size_t gf = sim->particles.add_field("grain", -1);
+    const std::size_t lf = sim->particles.add_field("layer", 0);
+    std::uint64_t last = 0;
+    for (int k = 0; k < 4; ++k) {
+      last = add_sphere(*sim, {k * (2 * r + 1e-6), 0, 0}, r);
+      sim->particles.field(gf).back() = 0;
+      sim->particles.field(lf).back() = 1;
+    }
+    sim->particles.flags[0] |= pflag::fixed;
+    const CaseFile f = CaseFile::parse(
+        "normal_stiffness = 1e9\nshear_stiffness = 4e8\ntensile_strength = 1e3\n"
+        "shear_strength = 1e12\ntensile_strength_sd = 2e2\n");
+    bonds::BondOptions opt;
+    opt.gap_tolerance = 1e-5;
+    opt.within_grain = true;
+    auto b = std::make_unique<bonds::BondsModule>(
+        bonds::BondLawRegistry::create("parallel_bond", f.root()), opt);
+    bonds = b.get();
+    sim->modules.push_back(std::move(b));
+    bonds::GrainBreakageOptions go;
+    go.broken_below = broken_below;
+    auto g = std::make_unique<bonds::GrainBreakageModule>(*bonds, go);
+    grains = g.get();
+    sim->modules.push_back(std::move(g));
+    // ramp 0.05 N/s: the tensile strength F = σ̄c π r² ≈ 3e-3 N is reached after ~0.06 s
+    sim->modules.push_back(std::make_unique<Pull>(last, 0.05, 1e-3));
+    sim->dt = 1e-5;
+    sim->options.skin = 2e-5;
+    for (int k = 0; k < 40000 && bonds->failures().empty(); ++k) sim->step();
+    sim->run(5000);
+  }
+};
+
+}  // namespace
+
+TEST(BondClusters, GrainBrokenWhenLargestFragmentBelowThreshold) {
+  PulledChain loose(0.8), strict(0.45);
+  ASSERT_EQ(loose.bonds->failures().size(), 1u);  // one bond failed: two pieces
+  ASSERT_EQ(strict.bonds->failures().size(), 1u);
+  // both runs are the same run (same seed, the threshold only observes): the same bond failed
+  const auto& f = loose.bonds->failures().front();
+  const std::uint64_t cut = std::min(f.id_i, f.id_j);  // bond between particle cut and cut + 1
+  // brute force: the pieces are particles 1…cut and cut+1…4 (ids from 1), equal masses
+  const double c = static_cast<double>(cut);
+  const double largest = std::max(c, 4.0 - c) / 4.0;
+  const auto fractions = loose.grains->largest_fractions(*loose.sim);
+  ASSERT_EQ(fractions.size(), 1u);
+  EXPECT_NEAR(fractions[0], largest, 1e-12);  // sums of four equal masses: round-off
+  // the largest piece is 3/4 or 1/2 of the grain: below 0.8, above 0.45
+  ASSERT_EQ(loose.grains->rows().size(), 1u);
+  EXPECT_NEAR(loose.grains->rows()[0].largest_fraction, largest, 1e-12);
+  EXPECT_TRUE(loose.grains->broken()[0]);
+  EXPECT_TRUE(strict.grains->rows().empty());
+  EXPECT_FALSE(strict.grains->broken()[0]);
+}

@@ -6,10 +6,15 @@
 #include <cmath>
 #include <numbers>
 
+#include "case_docs_check.hpp"
 #include "comminute/bonds/cluster_packing.hpp"
 #include "comminute/bonds/fragments.hpp"
 #include "comminute/bonds/grain_breakage_module.hpp"
+#include "comminute/io/case/bonds_case.hpp"
+#include "comminute/io/case/cluster_case.hpp"
+#include "comminute/io/case/output_case.hpp"
 #include "dem_fixture.hpp"
+#include "source_file.hpp"
 
 using namespace comminute;
 using namespace comminute::testing;
@@ -122,7 +127,8 @@ TEST(BondClusters, BondsOnlyWithinTheGapTolerance) {
     for (std::size_t j = i + 1; j < g.centres.size(); ++j)
       expected += norm(g.centres[j] - g.centres[i]) - 2 * g.radius <= gap ? 1 : 0;
   EXPECT_EQ(pairs.size(), expected);
-  for (const auto& p : pairs) EXPECT_LE(norm(g.centres[p[1]] - g.centres[p[0]]) - 2 * g.radius, gap);
+  for (const auto& p : pairs)
+    EXPECT_LE(norm(g.centres[p[1]] - g.centres[p[0]]) - 2 * g.radius, gap);
   // a dense packing joins its spheres into one piece within a few percent of r
   EXPECT_EQ(bonds::count_components(g.centres.size(), pairs), 1u);
 }
@@ -251,4 +257,22 @@ TEST(BondClusters, GrainBrokenWhenLargestFragmentBelowThreshold) {
   EXPECT_TRUE(loose.grains->broken()[0]);
   EXPECT_TRUE(strict.grains->rows().empty());
   EXPECT_FALSE(strict.grains->broken()[0]);
+}
+
+TEST(BondClusters, EveryKeyOfTheRiceExampleIsDocumented) {
+  const std::string doc = comminute::testing::read_source_file("docs/case-file.md");
+  ASSERT_FALSE(doc.empty());
+  CaseFile f = CaseFile::load(std::string(COMMINUTE_SOURCE_DIR) +
+                              "/examples/rice_compression/rice_compression.toml");
+  io::DemCase dem = io::build_dem_case(f.root());
+  const bonds::BondsModule* b = io::add_bonds(f.root(), dem);
+  ASSERT_NE(io::add_grain_breakage(f.root(), dem, b), nullptr);
+  if (auto o = f.root().optional_table("output")) io::read_output_options(*o);
+  f.reject_unknown();
+  expect_used_keys_documented(f, doc);
+  // 200 grains of 10 sub-spheres, each grain's sub-spheres carrying its mass ρ π L W T / 6
+  const ParticleStore& p = dem.sim->particles;
+  ASSERT_EQ(p.size(), 2000u);
+  const double grain_mass = 1450.0 * std::numbers::pi * 6e-3 * 3e-3 * 2.2e-3 / 6;
+  EXPECT_NEAR(p.total_mass(), 200 * grain_mass, 1e-9 * 200 * grain_mass);  // round-off of sums
 }

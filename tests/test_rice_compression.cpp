@@ -96,8 +96,8 @@ std::string replace_all(std::string s, const std::string& key, const std::string
 }
 
 struct Level {
-  double stress = 0;                  // Pa
-  std::vector<double> probability;    // per layer 1…5
+  double stress = 0;                // Pa
+  std::vector<double> probability;  // per layer 1…5
   double overall = 0, void_ratio = 0;
 };
 
@@ -144,9 +144,9 @@ TEST(RiceCompression, BreakageRisesWithStressFromTheTopAndVoidRatioFollowsTheNcl
   ASSERT_EQ(levels.size(), 6u) << "the piston did not reach 6 MPa";
   for (const Level& l : levels)
     RecordProperty("at_" + std::to_string(static_cast<int>(l.stress / 1e6)) + "MPa",
-                   std::to_string(l.overall) + " e=" + std::to_string(l.void_ratio) +
-                       " layers " + std::to_string(l.probability[0]) + " " +
-                       std::to_string(l.probability[2]) + " " + std::to_string(l.probability[4]));
+                   std::to_string(l.overall) + " e=" + std::to_string(l.void_ratio) + " layers " +
+                       std::to_string(l.probability[0]) + " " + std::to_string(l.probability[2]) +
+                       " " + std::to_string(l.probability[4]));
   // breakage rises with stress: broken grains stay broken, so the count can only grow; the check
   // is that it does grow between 2 and 6 MPa, from a state where not all are broken
   EXPECT_LT(levels[1].overall, 1.0);

@@ -4,7 +4,7 @@
 Usage: /usr/bin/python3 plot.py OUTPUT_DIR   (the run's [output] directory)
 Reads wall_control.csv, bed.csv, grains.csv, grain_breakage.csv, bonds.csv and fragments.csv by
 column name, prints the breakage probability per layer at 2, 3, 4, 5 and 6 MPa and writes
-rice_compression.png into OUTPUT_DIR. A grain counts as broken at stress S when it broke before
+rice_compression.png into OUTPUT_DIR. Columns are found by header name. A grain counts as broken at stress S when it broke before
 the piston stress first reached S (the load only grows, so a run stopped at S is this run up to
 that moment).
 """
@@ -57,16 +57,20 @@ def main(out):
 
     fig, ax = plt.subplots(2, 3, figsize=(15, 9))
     a = ax[0][0]
-    a.plot([1e3 * d for d in wc["piston_displacement"]], wc["piston_force"], lw=1)
-    a.set_xlabel("piston displacement [mm]")
+    # from first contact (force above 1 N): the approach before it carries no force
+    d0 = next((d for d, f in zip(wc["piston_displacement"], wc["piston_force"]) if f > 1.0), 0.0)
+    pts = [(1e3 * (d - d0), f) for d, f in zip(wc["piston_displacement"], wc["piston_force"]) if d >= d0]
+    a.plot([p for p, _ in pts], [f for _, f in pts], lw=1)
+    a.set_xlabel("piston displacement from first contact [mm]")
     a.set_ylabel("piston force [N]")
     a.set_title("force-displacement")
 
     a = ax[0][1]
     print("breakage probability per layer (layer 1 at the bottom)")
-    print("stress [MPa]  " + "  ".join(f"layer{l}" for l in layers) + "  all")
+    print("stress [MPa]  " + "  ".join(f"layer{l}" for l in layers) + "  all   void_ratio")
     for level in LEVELS:
-        t = first_time_at(wc["time"], wc["piston_stress"], level)
+        # bed.csv's stress is |F| / area, the quantity the [[stop]] condition compares
+        t = first_time_at(bed["time"], bed["axial_stress"], level)
         if t is None:
             continue
         p = []
@@ -74,7 +78,8 @@ def main(out):
             n = sum(1 for tt, ll in zip(events["time"], events["layer"]) if int(ll) == l and tt <= t)
             p.append(n / per_layer[l])
         total = sum(1 for tt in events["time"] if tt <= t) / len(grains["grain"])
-        print(f"{level / 1e6:12.0f}  " + "  ".join(f"{v:6.2f}" for v in p) + f"  {total:.2f}")
+        e = bed["void_ratio"][bed["time"].index(t)]
+        print(f"{level / 1e6:12.0f}  " + "  ".join(f"{v:6.2f}" for v in p) + f"  {total:.2f}  {e:.3f}")
         a.plot(p, layers, "o-", label=f"{level / 1e6:.0f} MPa")
     a.set_xlabel("breakage probability [-]")
     a.set_ylabel("layer (1 = bottom)")

@@ -20,12 +20,12 @@
 namespace comminute::bonds {
 
 struct GrainTemplate {
-  std::vector<Vec3> centres;  // m, body frame
-  double radius = 0;          // m, of every sub-sphere
-  double volume = 0;          // m³, of the shape (the grain's nominal volume)
-  double equivalent_diameter = 0;                    // m
+  std::vector<Vec3> centres;       // m, body frame
+  double radius = 0;               // m, of every sub-sphere
+  double volume = 0;               // m³, of the shape (the grain's nominal volume)
+  double equivalent_diameter = 0;  // m
   std::vector<std::array<std::uint32_t, 2>> bonds;  // pairs of sub-spheres (i < j)
-  double solid_fraction() const;                     // sub-sphere volume / shape volume
+  double solid_fraction() const;                    // sub-sphere volume / shape volume
 };
 
 // Packs n sub-spheres into the shape at a target solid fraction; throws Error when n < 1 or the

@@ -36,7 +36,8 @@ double ellipsoid_signed_distance(const Vec3& e, const Vec3& x) {
   const double emin = std::min({e.x, e.y, e.z});
   Vec3 y;
   for (int a = 0; a < 3; ++a) y[a] = std::max(std::abs(x[a]), 1e-9 * emin);
-  const double q = (y.x / e.x) * (y.x / e.x) + (y.y / e.y) * (y.y / e.y) + (y.z / e.z) * (y.z / e.z);
+  const double q =
+      (y.x / e.x) * (y.x / e.x) + (y.y / e.y) * (y.y / e.y) + (y.z / e.z) * (y.z / e.z);
   auto f = [&](double t) {
     double s = -1;
     for (int a = 0; a < 3; ++a) {
@@ -119,8 +120,7 @@ class MeshShape final : public ClusterShape {
         ++edges[{std::min(a, b), std::max(a, b)}];
       }
     for (const auto& [e, n] : edges)
-      if (n != 2)
-        throw Error("the grain mesh is not closed: an edge belongs to one triangle only");
+      if (n != 2) throw Error("the grain mesh is not closed: an edge belongs to one triangle only");
     // volume and centroid by the divergence theorem over tetrahedra from the origin
     double v = 0;
     Vec3 c;

@@ -15,10 +15,10 @@ class ClusterShape {
   virtual ~ClusterShape() = default;
   // m, < 0 inside: minus the distance to the surface; > 0 outside: the distance.
   virtual double signed_distance(const Vec3& x) const = 0;
-  virtual double volume() const = 0;           // m³
-  virtual Vec3 half_extent() const = 0;        // m, the shape lies in [−h, h] per axis
-  double equivalent_diameter() const;          // m, of the sphere of the same volume
-  Vec3 outward_normal(const Vec3& x) const;    // unit, the gradient of signed_distance (numerical)
+  virtual double volume() const = 0;         // m³
+  virtual Vec3 half_extent() const = 0;      // m, the shape lies in [−h, h] per axis
+  double equivalent_diameter() const;        // m, of the sphere of the same volume
+  Vec3 outward_normal(const Vec3& x) const;  // unit, the gradient of signed_distance (numerical)
 };
 
 std::unique_ptr<ClusterShape> make_sphere_shape(double diameter);

@@ -14,8 +14,10 @@ namespace comminute::bonds {
 std::array<Vec3, 3> random_rotation(Rng& rng) {
   const double u1 = rng.uniform(), u2 = rng.uniform(), u3 = rng.uniform();
   const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
-  const double w = a * std::sin(2 * std::numbers::pi * u2), x = a * std::cos(2 * std::numbers::pi * u2);
-  const double y = b * std::sin(2 * std::numbers::pi * u3), z = b * std::cos(2 * std::numbers::pi * u3);
+  const double w = a * std::sin(2 * std::numbers::pi * u2),
+               x = a * std::cos(2 * std::numbers::pi * u2);
+  const double y = b * std::sin(2 * std::numbers::pi * u3),
+               z = b * std::cos(2 * std::numbers::pi * u3);
   return {Vec3{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
           Vec3{2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
           Vec3{2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
@@ -49,7 +51,8 @@ class SphereGrid {
   long cell_of(const Vec3& x, int a) const { return static_cast<long>(std::floor(x[a] / cell_)); }
   static std::int64_t key(long i, long j, long k) {
     return (static_cast<std::int64_t>(i) & 0x1FFFFF) << 42 |
-           (static_cast<std::int64_t>(j) & 0x1FFFFF) << 21 | (static_cast<std::int64_t>(k) & 0x1FFFFF);
+           (static_cast<std::int64_t>(j) & 0x1FFFFF) << 21 |
+           (static_cast<std::int64_t>(k) & 0x1FFFFF);
   }
   double cell_;
   std::vector<Vec3> x_;
@@ -60,7 +63,8 @@ class SphereGrid {
 // Slice `layer` (0-based) of `layers` along the region's axis.
 Region slice(const Region& g, int layer, int layers) {
   Region s = g;
-  const double f0 = static_cast<double>(layer) / layers, f1 = static_cast<double>(layer + 1) / layers;
+  const double f0 = static_cast<double>(layer) / layers,
+               f1 = static_cast<double>(layer + 1) / layers;
   if (g.shape == Region::Shape::box) {
     s.lo.z = g.lo.z + f0 * (g.hi.z - g.lo.z);
     s.hi.z = g.lo.z + f1 * (g.hi.z - g.lo.z);
@@ -122,9 +126,10 @@ std::vector<PlacedSphere> place_grains(const std::vector<GrainTemplate>& templat
         }
       }
       if (!placed)
-        throw Error(fmt::format("layer {} of {}: grain {} of {} did not fit after {} attempts ({} "
-                                "grains placed); enlarge the region or insert fewer grains",
-                                layer + 1, request.layers, n + 1, share, request.attempts, grain));
+        throw Error(
+            fmt::format("layer {} of {}: grain {} of {} did not fit after {} attempts ({} "
+                        "grains placed); enlarge the region or insert fewer grains",
+                        layer + 1, request.layers, n + 1, share, request.attempts, grain));
     }
   }
   return out;

@@ -16,8 +16,8 @@
 namespace comminute::bonds {
 
 struct PlacedSphere {
-  Vec3 x;            // m
-  double radius = 0;  // m
+  Vec3 x;                                                     // m
+  double radius = 0;                                          // m
   std::uint32_t grain = 0, layer = 0, sphere = 0, templ = 0;  // sphere: index in its template
 };
 

@@ -276,3 +276,29 @@ TEST(BondClusters, EveryKeyOfTheRiceExampleIsDocumented) {
   const double grain_mass = 1450.0 * std::numbers::pi * 6e-3 * 3e-3 * 2.2e-3 / 6;
   EXPECT_NEAR(p.total_mass(), 200 * grain_mass, 1e-9 * 200 * grain_mass);  // round-off of sums
 }
+
+TEST(BondClusters, WithinGrainBondsNeverJoinTwoGrains) {
+  // two grains of two spheres each, all four in a touching row: only 0-1 and 2-3 are bonded
+  auto sim = make_simulation(DemSetup{});
+  const std::size_t gf = sim->particles.add_field("grain", -1);
+  for (int k = 0; k < 4; ++k) {
+    add_sphere(*sim, {k * 2.000001e-3, 0, 0}, 1e-3);
+    sim->particles.field(gf).back() = k / 2;
+  }
+  const CaseFile f = CaseFile::parse(
+      "normal_stiffness = 1e9\nshear_stiffness = 4e8\ntensile_strength = 1e6\n"
+      "shear_strength = 1e6\n");
+  bonds::BondOptions opt;
+  opt.gap_tolerance = 1e-5;
+  opt.within_grain = true;
+  auto b = std::make_unique<bonds::BondsModule>(
+      bonds::BondLawRegistry::create("parallel_bond", f.root()), opt);
+  bonds::BondsModule* module = b.get();
+  sim->modules.push_back(std::move(b));
+  sim->dt = 1e-6;
+  sim->options.skin = 2e-5;
+  sim->step();
+  ASSERT_EQ(module->bonds().size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k)
+    EXPECT_EQ((module->bonds().id_i[k] - 1) / 2, (module->bonds().id_j[k] - 1) / 2);
+}

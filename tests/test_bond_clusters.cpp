@@ -1,12 +1,14 @@
 // Bonded grains: packing a shape with sub-spheres (fills it, stays inside, right equivalent
-// diameter), bonds only within the gap tolerance, connected components against a brute-force
-// count, the grain-broken threshold in a pulled chain.
+// diameter), bonds only within the gap tolerance and within grains, connected components against
+// a brute-force count, the grain-broken threshold in a pulled chain and its restart, the
+// breakage-mode rule, refused input.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
 #include "case_docs_check.hpp"
+#include "comminute/bonds/breakage_mode.hpp"
 #include "comminute/bonds/cluster_packing.hpp"
 #include "comminute/bonds/fragments.hpp"
 #include "comminute/bonds/grain_breakage_module.hpp"
@@ -326,4 +328,55 @@ TEST(BondClusters, GrainBreakageRestartsBitForBit) {
   EXPECT_EQ(r.mode, q.mode);
   EXPECT_EQ(straight.grains->broken(), resumed.grains->broken());
   EXPECT_EQ(straight.sim->particles.x, resumed.sim->particles.x);
+}
+
+TEST(BondClusters, BreakageModesFollowTheDocumentedRule) {
+  // a rod of 9 centres along x (half-length a = 4 + 0.5 = 4.5 with radius 0.5)
+  std::vector<Vec3> c;
+  for (int k = -4; k <= 4; ++k) c.push_back({static_cast<double>(k), 0.1 * (k % 2), 0});
+  const Vec3 x{1, 0, 0}, y{0, 1, 0};
+  using bonds::BreakageMode;
+  // bonds along the axis cut at mid-length: a transverse crack in the middle (s = 0.5 / 4.5)
+  EXPECT_EQ(bonds::classify_breakage(c, 0.5, {{{0.5, 0, 0}, x}}), BreakageMode::central);
+  // the same near a tip (s = 3.5 / 4.5 > 0.5): a chipped end
+  EXPECT_EQ(bonds::classify_breakage(c, 0.5, {{{3.5, 0, 0}, x}}), BreakageMode::end_chipping);
+  // bonds across the axis (α = 0 < 0.55): split lengthwise, wherever they are
+  EXPECT_EQ(bonds::classify_breakage(c, 0.5, {{{-2, 0, 0}, y}, {{2, 0, 0}, y}}),
+            BreakageMode::split);
+  // α at the threshold side: directions at 60° from the axis give |n·e| = 0.5 < 0.55
+  const Vec3 tilted{0.5, std::sqrt(3.0) / 2, 0};
+  EXPECT_EQ(bonds::classify_breakage(c, 0.5, {{{0, 0, 0}, tilted}}), BreakageMode::split);
+}
+
+TEST(BondClusters, ClustersWithoutWithinGrainBondsAreRefused) {
+  const CaseFile f = CaseFile::parse(R"(
+[simulation]
+end_time = 0.1
+[contact]
+model = "hertz_mindlin"
+[materials.rice]
+density = 1450.0
+youngs_modulus = 1.0e8
+poisson_ratio = 0.3
+[[insert]]
+type = "clusters"
+material = "rice"
+shape = "sphere"
+diameter = 3e-3
+spheres_per_grain = 8
+count = 2
+region = { shape = "box", lo = [0.0, 0.0, 0.0], hi = [0.02, 0.02, 0.02] }
+[bonds]
+law = "parallel_bond"
+normal_stiffness = 1e9
+shear_strength = 1e6
+shear_stiffness = 1e9
+tensile_strength = 1e6
+)");
+  try {
+    io::build_dem_case(f.root());
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("within_grain"), std::string::npos) << e.what();
+  }
 }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <numbers>
 
 #include "case_docs_check.hpp"
@@ -17,6 +18,7 @@
 #include "comminute/io/case/output_case.hpp"
 #include "dem_fixture.hpp"
 #include "source_file.hpp"
+#include "temp_dir.hpp"
 
 using namespace comminute;
 using namespace comminute::testing;
@@ -379,4 +381,67 @@ tensile_strength = 1e6
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("within_grain"), std::string::npos) << e.what();
   }
+}
+
+TEST(BondClusters, StlGrainsFromACaseFile) {
+  // a 3 mm cube as an ASCII STL in millimetres (scale = 0.001), 6 grains of 12 sub-spheres
+  const comminute::testing::TestDir dir;
+  const IndexedMesh cube = cube_mesh(3.0);
+  {
+    std::ofstream stl(dir / "cube.stl");
+    stl << "solid cube\n";
+    for (const auto& t : cube.triangles) {
+      stl << " facet normal 0 0 0\n  outer loop\n";
+      for (std::uint32_t v : t)
+        stl << "   vertex " << cube.vertices[v].x << " " << cube.vertices[v].y << " "
+            << cube.vertices[v].z << "\n";
+      stl << "  endloop\n endfacet\n";
+    }
+    stl << "endsolid cube\n";
+  }
+  {
+    std::ofstream toml(dir / "case.toml");
+    toml << R"([simulation]
+end_time = 0.1
+skin = 3e-4
+[contact]
+model = "hertz_mindlin"
+[materials.rock]
+density = 2500.0
+youngs_modulus = 1.0e8
+poisson_ratio = 0.3
+[[insert]]
+type = "clusters"
+material = "rock"
+shape = "stl"
+file = "cube.stl"
+scale = 0.001
+spheres_per_grain = 12
+count = 6
+layers = 2
+region = { shape = "box", lo = [0.0, 0.0, 0.0], hi = [0.02, 0.02, 0.02] }
+[bonds]
+law = "parallel_bond"
+within_grain = true
+gap_tolerance = 3e-4
+normal_stiffness = 1e9
+shear_stiffness = 1e9
+tensile_strength = 1e6
+shear_strength = 1e6
+)";
+  }
+  CaseFile f = CaseFile::load(dir / "case.toml");
+  io::DemCase dem = io::build_dem_case(f.root());
+  const ParticleStore& p = dem.sim->particles;
+  ASSERT_EQ(p.size(), 72u);
+  // each grain carries the cube's mass ρ (3 mm)³ (round-off of twelve terms)
+  const auto& grain = p.field(p.field_index("grain"));
+  const auto& layer = p.field(p.field_index("layer"));
+  std::vector<double> mass(6, 0);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    mass[static_cast<std::size_t>(grain[i])] += p.mass[i];
+    // layers: grains 0-2 in the lower half (layer 1), 3-5 in the upper one
+    EXPECT_EQ(layer[i], grain[i] < 3 ? 1.0 : 2.0);
+  }
+  for (double m : mass) EXPECT_NEAR(m, 2500.0 * 27e-9, 1e-12 * 2500.0 * 27e-9);
 }

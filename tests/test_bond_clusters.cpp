@@ -180,6 +180,19 @@ TEST(BondClusters, ComponentsMatchABruteForceCountAfterRandomFailures) {
 
 namespace {
 
+// Parallel bonds (k̄n = 1e9, k̄s = 4e8 Pa/m, the given strengths) within grains, gap 10 µm.
+bonds::BondsModule* add_grain_bonds(Simulation& sim, const std::string& strengths) {
+  const CaseFile f = CaseFile::parse("normal_stiffness = 1e9\nshear_stiffness = 4e8\n" + strengths);
+  bonds::BondOptions opt;
+  opt.gap_tolerance = 1e-5;
+  opt.within_grain = true;
+  auto b = std::make_unique<bonds::BondsModule>(
+      bonds::BondLawRegistry::create("parallel_bond", f.root()), opt);
+  bonds::BondsModule* out = b.get();
+  sim.modules.push_back(std::move(b));
+  return out;
+}
+
 // Pulls one particle along +x with a force ramp and damps every particle's motion.
 class Pull final : public Module {
  public:
@@ -216,16 +229,9 @@ struct PulledChain {
       sim->particles.field(lf).back() = 1;
     }
     sim->particles.flags[0] |= pflag::fixed;
-    const CaseFile f = CaseFile::parse(
-        "normal_stiffness = 1e9\nshear_stiffness = 4e8\ntensile_strength = 1e3\n"
-        "shear_strength = 1e12\ntensile_strength_sd = 2e2\n");
-    bonds::BondOptions opt;
-    opt.gap_tolerance = 1e-5;
-    opt.within_grain = true;
-    auto b = std::make_unique<bonds::BondsModule>(
-        bonds::BondLawRegistry::create("parallel_bond", f.root()), opt);
-    bonds = b.get();
-    sim->modules.push_back(std::move(b));
+    bonds = add_grain_bonds(*sim,
+                            "tensile_strength = 1e3\nshear_strength = 1e12\n"
+                            "tensile_strength_sd = 2e2\n");
     bonds::GrainBreakageOptions go;
     go.broken_below = broken_below;
     auto g = std::make_unique<bonds::GrainBreakageModule>(*bonds, go);
@@ -294,16 +300,8 @@ TEST(BondClusters, WithinGrainBondsNeverJoinTwoGrains) {
     add_sphere(*sim, {k * 2.000001e-3, 0, 0}, 1e-3);
     sim->particles.field(gf).back() = k / 2;
   }
-  const CaseFile f = CaseFile::parse(
-      "normal_stiffness = 1e9\nshear_stiffness = 4e8\ntensile_strength = 1e6\n"
-      "shear_strength = 1e6\n");
-  bonds::BondOptions opt;
-  opt.gap_tolerance = 1e-5;
-  opt.within_grain = true;
-  auto b = std::make_unique<bonds::BondsModule>(
-      bonds::BondLawRegistry::create("parallel_bond", f.root()), opt);
-  bonds::BondsModule* module = b.get();
-  sim->modules.push_back(std::move(b));
+  bonds::BondsModule* module =
+      add_grain_bonds(*sim, "tensile_strength = 1e6\nshear_strength = 1e6\n");
   sim->dt = 1e-6;
   sim->options.skin = 2e-5;
   sim->step();

@@ -2,6 +2,7 @@
 // docs/case-file.md (as `key` in a table row).
 #include <gtest/gtest.h>
 
+#include "case_docs_check.hpp"
 #include "comminute/io/case/dem_case.hpp"
 #include "comminute/io/case/output_case.hpp"
 #include "source_file.hpp"
@@ -31,17 +32,6 @@ TEST(CaseDocs, EveryKeyOfTheDemExamplesIsDocumented) {
     io::build_dem_case(f.root());
     if (auto o = f.root().optional_table("output")) io::read_output_options(*o);
     f.reject_unknown();
-    for (const std::string& path : f.used_keys()) {
-      std::string leaf = path.substr(path.find_last_of('.') + 1);
-      leaf = leaf.substr(0, leaf.find('['));
-      if (path.rfind("materials.", 0) == 0 && path.find('.', 10) == std::string::npos) continue;
-      if (path.find('.') == std::string::npos) {  // a top-level table: documented as a heading
-        EXPECT_NE(doc.find("[" + leaf), std::string::npos)
-            << path << " is not in docs/case-file.md";
-        continue;
-      }
-      EXPECT_NE(doc.find("`" + leaf + "`"), std::string::npos)
-          << path << " is not in docs/case-file.md";
-    }
+    comminute::testing::expect_used_keys_documented(f, doc);
   }
 }

@@ -8,6 +8,7 @@
 #include "comminute/core/memory.hpp"
 #include "comminute/core/units.hpp"
 #include "comminute/engine/insertion.hpp"
+#include "comminute/io/case/cluster_case.hpp"
 #include "comminute/io/case/lammps_data.hpp"
 #include "comminute/io/case/machine_case.hpp"
 #include "comminute/io/case/periodic_case.hpp"
@@ -133,9 +134,14 @@ struct SmallestParticle {
   Vec3 lo, hi;  // m, bounding box of the region or the read particles
 };
 
-SmallestParticle read_insertion(const CaseTable& t, std::size_t index, Simulation& sim) {
-  const std::string type = t.choice("type", {"fill", "pour", "data_file"});
+SmallestParticle read_insertion(const CaseTable& root, const CaseTable& t, std::size_t index,
+                                Simulation& sim) {
+  const std::string type = t.choice("type", {"fill", "pour", "data_file", "clusters"});
   const std::uint16_t mat = material_index(t, "material", sim);
+  if (type == "clusters") {
+    const InsertedClusters c = insert_clusters(root, t, mat, index, sim);
+    return {c.radius, mat, c.radius, c.lo, c.hi};
+  }
   if (type == "data_file") {
     auto particles = read_lammps_data(t.input_file("file"), t.key_path("file"));
     double rmin = std::numeric_limits<double>::infinity();
@@ -236,7 +242,7 @@ DemCase build_dem_case(const CaseTable& root) {
   out.time_step = std::make_unique<TimeStepPolicy>(s, out.end_time);
   ParticleReach reach;
   for (std::size_t k = 0; k < inserts.size(); ++k) {
-    const SmallestParticle sp = read_insertion(inserts[k], k, sim);
+    const SmallestParticle sp = read_insertion(root, inserts[k], k, sim);
     out.time_step->add({sp.radius, sp.material, fmt::format("insert[{}]", k), false});
     reach.largest_diameter = std::max(reach.largest_diameter, 2 * sp.largest_radius);
     for (int a = 0; a < 3; ++a) {

@@ -113,15 +113,31 @@ TEST(Hpgr, ChuteAndSidePlatesFaceTheRollsWithTheirClearances) {
   EXPECT_NEAR(lowest - std::sqrt(R * R - s * s), g.chute_clearance, 1e-15);
 }
 
-TEST(Hpgr, WithoutSidePlatesTheRollsAndChuteOverhangTheSlice) {
+TEST(Hpgr, WithoutSidePlatesTheRollsAndChuteRepeatAcrossTheSlice) {
+  // A slice periodic along y with period W must see the same surface from both faces: the rolls
+  // and the chute reach at least `overhang` past -/+ W/2, and their vertices repeat with period
+  // W (every vertex shifted by W, inside the mesh's reach, is a vertex too; but the centres of
+  // the rolls' end discs).
   RollPairGeometry g = press();
   g.side_plates = false;
   g.overhang = 0.5;
   EXPECT_TRUE(side_plates_mesh(g).triangles.empty());
-  for (const IndexedMesh& m : {roll_mesh(g, 0), chute_mesh(g)}) {
+  for (const IndexedMesh& m : {roll_mesh(g, 0), roll_mesh(g, 1), chute_mesh(g)}) {
     double y = 0;
     for (const Vec3& v : m.vertices) y = std::max(y, std::abs(v.y));
-    EXPECT_EQ(y, g.width / 2 + g.overhang);
+    EXPECT_GE(y, g.width / 2 + g.overhang);
+    std::size_t shifted = 0;
+    for (const Vec3& v : m.vertices) {
+      if (!(v.y + g.width <= y)) continue;
+      if (v.z == 0 && std::abs(v.x) == roll_offset(g)) continue;  // an end disc's centre
+      ++shifted;
+      // 1e-12 m: round-off of the tile positions -half + k (2 half / n), half ~ 0.7 m
+      bool found = false;
+      for (const Vec3& w : m.vertices)
+        found = found || norm(w - Vec3{v.x, v.y + g.width, v.z}) < 1e-12;
+      EXPECT_TRUE(found) << v.x << " " << v.y << " " << v.z;
+    }
+    EXPECT_GT(shifted, 0u);
   }
 }
 

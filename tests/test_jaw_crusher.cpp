@@ -40,8 +40,9 @@ TEST(JawCrusher, JawsAndCheekPlatesFaceTheChamberWithTheKeyedOpenings) {
   const IndexedMesh fixed = fixed_jaw_mesh(g), swing = swing_jaw_mesh(g),
                     cheeks = cheek_plates_mesh(g);
   for (const IndexedMesh* m : {&fixed, &swing, &cheeks}) EXPECT_NO_THROW(validate_mesh(*m));
-  EXPECT_EQ(fixed.triangles.size(), 2u * g.divisions);
-  EXPECT_EQ(swing.triangles.size(), 2u * g.divisions);
+  // 16 strips of 12.5 mm down the jaw, 8 tiles of 12.5 mm across its 0.1 m width
+  EXPECT_EQ(fixed.triangles.size(), 2u * 16 * 8);
+  EXPECT_EQ(swing.triangles.size(), 2u * 16 * 8);
   for (std::size_t t = 0; t < fixed.triangles.size(); ++t)
     EXPECT_EQ(triangle_normal(fixed, t).x, 1.0);  // towards the chamber, exactly
   // the swing jaw faces the fixed jaw (-x) and leans by the nip angle atan((gape - css) / H);

@@ -4,7 +4,8 @@ centres, -press_roll1_Fx and press_roll2_Fx), the power of each roll (press_roll
 and the product's size distribution (mass passing each sieve) from the outlet log, the feed's for
 comparison; prints the mean force, power and throughput over the window the product flows.
 
-usage: examples/hpgr/plot_hpgr.py OUTPUT_DIR [--wall press] [--from T0] [-o hpgr.png]
+usage: examples/hpgr/plot_hpgr.py OUTPUT_DIR [--wall press] [--outlet product] [--from T0]
+       [--feed A B] [--gap G] [-o hpgr.png]
 (defaults: window from the first product to the end; output hpgr.png in OUTPUT_DIR)"""
 import argparse
 import csv
@@ -39,8 +40,10 @@ def main():
     ap.add_argument("output")
     ap.add_argument("--wall", default="press")
     ap.add_argument("--from", dest="t0", type=float)
-    ap.add_argument("--feed", type=float, nargs=2, default=[0.025, 0.04],
-                    help="the feed's uniform diameter range [m] (default 0.025 0.04)")
+    ap.add_argument("--outlet", default="product")
+    ap.add_argument("--feed", type=float, nargs=2, default=[0.045, 0.075],
+                    help="the feed's uniform diameter range [m] (default 0.045 0.075)")
+    ap.add_argument("--gap", type=float, default=0.06, help="the gap [m] (default 0.06)")
     ap.add_argument("-o", "--png")
     args = ap.parse_args()
     ts_path = os.path.join(args.output, "timeseries.csv")
@@ -54,10 +57,14 @@ def main():
     p2 = column(ts, f"{args.wall}_roll2_P [W]", ts_path)
     if not log:
         sys.exit(f"{log_path}: no product yet (run longer)")
-    times = [float(r["time [s]"]) for r in log]
+    times = [float(r["time [s]"]) for r in log if r["outlet [-]"] == args.outlet] or [t[-1]]
     t0 = args.t0 if args.t0 is not None else min(times)
     t1 = t[-1]
     window = [i for i, x in enumerate(t) if t0 <= x <= t1]
+    spilled = sum(1 for r in log if r["outlet [-]"] != args.outlet)
+    log = [r for r in log if r["outlet [-]"] == args.outlet]
+    if not log:
+        sys.exit(f"{log_path}: nothing left through the outlet '{args.outlet}' yet")
     product = [(float(r["diameter [m]"]), float(r["mass [kg]"])) for r in log
                if t0 < float(r["time [s]"]) <= t1]
     mean = lambda xs: sum(xs[i] for i in window) / max(1, len(window))  # noqa: E731
@@ -66,7 +73,11 @@ def main():
     print(f"window {t0:.3f}-{t1:.3f} s: separating force roll1 {mean(f1):.4g} N, roll2 "
           f"{mean(f2):.4g} N; power roll1 {mean(p1):.4g} W, roll2 {mean(p2):.4g} W")
     print(f"product: {len(product)} particles, {mass:.4g} kg, throughput {rate:.4g} kg/s "
-          f"(slice), generations {sorted(set(int(r['generation [-]']) for r in log))}")
+          f"(slice), generations {sorted(set(int(r['generation [-]']) for r in log))}; "
+          f"{spilled} particles left through other outlets")
+    coarse = sum(m for d, m in product if d > args.gap)
+    print(f"{100 * coarse / mass:.3g} % of the product mass is coarser than the gap "
+          f"(README.md: fragments still growing, or squeezed through by the soft contacts)")
     sieves = [0.004 * 2 ** (k / 4) for k in range(0, 19)]
     fig, ax = plt.subplots(1, 3, figsize=(15, 4.6))
     ax[0].plot(t, f1, lw=0.8, label="roll 1: −Fx")

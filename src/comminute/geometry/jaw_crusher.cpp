@@ -11,8 +11,9 @@ namespace comminute {
 
 namespace {
 
-double jaw_half_width(const JawCrusherGeometry& g) {
-  return g.side_plates ? g.width / 2 : g.width / 2 + g.overhang;
+// The jaws' tiles along y, about as wide as a strip is high.
+AxialTiling jaw_tiling(const JawCrusherGeometry& g) {
+  return axial_tiling(g.width, g.side_plates ? 0.0 : g.overhang, g.height / g.divisions);
 }
 
 }  // namespace
@@ -35,18 +36,20 @@ void check_jaw_crusher(const JawCrusherGeometry& g) {
 
 IndexedMesh fixed_jaw_mesh(const JawCrusherGeometry& g) {
   check_jaw_crusher(g);
-  const double y = jaw_half_width(g);
+  const AxialTiling tiles = jaw_tiling(g);
+  const double y = tiles.half;
   IndexedMesh m;
-  add_grid(m, {0, -y, 0}, {0, 2 * y, 0}, {0, 0, g.height}, 1, g.divisions, {1, 0, 0});
+  add_grid(m, {0, -y, 0}, {0, 2 * y, 0}, {0, 0, g.height}, tiles.count, g.divisions, {1, 0, 0});
   return m;
 }
 
 IndexedMesh swing_jaw_mesh(const JawCrusherGeometry& g) {
   check_jaw_crusher(g);
-  const double y = jaw_half_width(g);
+  const AxialTiling tiles = jaw_tiling(g);
+  const double y = tiles.half;
   IndexedMesh m;
   add_grid(m, {g.closed_side_setting, -y, 0}, {0, 2 * y, 0},
-           {g.gape - g.closed_side_setting, 0, g.height}, 1, g.divisions, {-1, 0, 0});
+           {g.gape - g.closed_side_setting, 0, g.height}, tiles.count, g.divisions, {-1, 0, 0});
   return m;
 }
 

@@ -9,9 +9,11 @@
 // edge along y (the pivot, which stays put: the feed opening is `gape` at all times); an eccentric
 // drives its bottom edge, which swings between the closed side (x = css) and the open side
 // (x = css + throw), once per turn of the eccentric. Both jaws are tiled by `divisions` strips
-// along the height (so the wear per triangle shows a profile down the jaw). Side (cheek) plates:
+// along the height (so the wear per triangle shows a profile down the jaw) and by tiles about as
+// wide as a strip is high across the width (repeating with period `width`). Side (cheek) plates:
 // the rectangles y = -/+ width/2, 0 <= x <= gape, 0 <= z <= height, facing the chamber; without
-// them (a slice periodic along y) the jaws extend `overhang` beyond -/+ width/2.
+// them (a slice periodic along y) the jaws extend `overhang` (rounded up to whole tiles) beyond
+// -/+ width/2.
 //
 // Motion (a documented simplification of the eccentric and toggle linkage): the swing angle
 // about the pivot varies harmonically with the eccentric's phase,

@@ -1,5 +1,6 @@
 #include "comminute/geometry/mesh_pieces.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace comminute {
@@ -25,6 +26,13 @@ void add_grid(IndexedMesh& m, const Vec3& o, const Vec3& u, const Vec3& v, int n
         m.triangles.push_back({a, r, q});
       }
     }
+}
+
+AxialTiling axial_tiling(double width, double overhang, double target) {
+  const int m = std::max(1, static_cast<int>(std::ceil(width / target - 1e-9)));
+  const double tile = width / m;
+  const int over = overhang > 0 ? static_cast<int>(std::ceil(overhang / tile - 1e-9)) : 0;
+  return {width / 2 + over * tile, m + 2 * over};
 }
 
 void append(IndexedMesh& m, const IndexedMesh& part) {

@@ -13,13 +13,19 @@ namespace comminute {
 
 namespace {
 
-// Half the extent along y of the rolls and of the chute.
-double roll_half_length(const RollPairGeometry& g) {
-  return g.side_plates ? g.width / 2 : g.width / 2 + g.overhang;
+// The rolls' rings along y: tiles of at most four facet chords (or width / axial_divisions).
+AxialTiling roll_tiling(const RollPairGeometry& g) {
+  const double chord = g.diameter * std::sin(std::numbers::pi / g.segments);
+  const double target = g.axial_divisions > 0 ? g.width / g.axial_divisions : 4 * chord;
+  return axial_tiling(g.width, g.side_plates ? 0.0 : g.overhang, target);
 }
 
-double chute_half_length(const RollPairGeometry& g) {
-  return g.side_plates ? g.width / 2 + g.side_plate_clearance : g.width / 2 + g.overhang;
+// The chute plates' tiles along y, about as long as a plate's slant height.
+AxialTiling chute_tiling(const RollPairGeometry& g) {
+  const double slant = g.chute_height / std::cos(g.chute_angle);
+  if (!g.side_plates) return axial_tiling(g.width, g.overhang, slant);
+  const double half = g.width / 2 + g.side_plate_clearance;
+  return {half, std::max(1, static_cast<int>(std::ceil(2 * half / slant)))};
 }
 
 }  // namespace
@@ -59,14 +65,12 @@ double roll_offset(const RollPairGeometry& g) {
 }
 
 int roll_rings(const RollPairGeometry& g) {
-  if (g.axial_divisions > 0) return g.axial_divisions;
-  const double chord = g.diameter * std::sin(std::numbers::pi / g.segments);
-  return std::max(1, static_cast<int>(std::ceil(2 * roll_half_length(g) / (4 * chord))));
+  return roll_tiling(g).count;
 }
 
 IndexedMesh roll_mesh(const RollPairGeometry& g, int k) {
   check_roll_pair(g);
-  const double R = g.diameter / 2, c = roll_offset(g), y = roll_half_length(g);
+  const double R = g.diameter / 2, c = roll_offset(g), y = roll_tiling(g).half;
   const auto n = static_cast<std::uint32_t>(g.segments);
   const auto rings = static_cast<std::uint32_t>(roll_rings(g));
   IndexedMesh m;
@@ -109,10 +113,12 @@ IndexedMesh chute_mesh(const RollPairGeometry& g) {
   check_roll_pair(g);
   IndexedMesh m;
   if (!g.chute) return m;
-  const double y = chute_half_length(g), z0 = chute_bottom(g), z1 = z0 + g.chute_height;
+  const AxialTiling tiles = chute_tiling(g);
+  const double y = tiles.half, z0 = chute_bottom(g), z1 = z0 + g.chute_height;
   const double x0 = g.chute_opening / 2, x1 = x0 + g.chute_height * std::tan(g.chute_angle);
   for (double s : {-1.0, 1.0})
-    add_grid(m, {s * x0, -y, z0}, {0, 2 * y, 0}, {s * (x1 - x0), 0, z1 - z0}, 1, 1, {-s, 0, 0});
+    add_grid(m, {s * x0, -y, z0}, {0, 2 * y, 0}, {s * (x1 - x0), 0, z1 - z0}, tiles.count, 1,
+             {-s, 0, 0});
   return m;
 }
 

@@ -13,8 +13,9 @@
 // surface below them, leaning outwards by `chute_angle` from the vertical up to `chute_height`
 // above the lower edges. Side plates: rectangles at y = -/+ (W/2 + side_plate_clearance) from the
 // bottom of the rolls to the top of the chute. Without side plates (a slice periodic along y) the
-// rolls and the chute extend `overhang` beyond -/+ W/2 instead, so that a periodic face at
-// -/+ W/2 sees the same surface on both sides.
+// rolls and the chute extend `overhang` (rounded up to whole tiles of their tiling along y, which
+// repeats with period W) beyond -/+ W/2 instead, so that a periodic face at -/+ W/2 sees the same
+// surface on both sides.
 #include "comminute/geometry/stl_file.hpp"
 
 namespace comminute {
@@ -24,7 +25,7 @@ struct RollPairGeometry {
   double width = 0;                 // m, roll length along y
   double gap = 0;                   // m, at the pinch
   int segments = 360;               // roll polygon vertices on the full circle
-  int axial_divisions = 0;          // rings of the roll mantle along y (0: automatic)
+  int axial_divisions = 0;          // rings of the roll mantle across the width (0: automatic)
   bool chute = true;                // false: no chute
   double chute_opening = 0;         // m, between the lower edges of the plates
   double chute_height = 0;          // m, vertical extent of the plates
@@ -39,8 +40,10 @@ struct RollPairGeometry {
 void check_roll_pair(const RollPairGeometry& g);
 // Distance of each roll's axis from the pinch along the line of centres: D/2 + gap/2 (m).
 double roll_offset(const RollPairGeometry& g);
-// Rings of the roll mantle along y: axial_divisions, or when 0 enough that a ring is at most four
-// facet chords long (long thin facets would fill the cells of the mesh's triangle grid).
+// Rings of the roll mantle along y: axial_divisions across the width, or when 0 enough that a ring
+// is at most four facet chords long (long thin facets would fill the cells of the mesh's triangle
+// grid); without side plates continued over the overhang, rounded up to whole rings (so a slice
+// periodic across the width sees the same rings from both faces).
 int roll_rings(const RollPairGeometry& g);
 // Roll k (0: at -x, 1: at +x), closed, outward normals.
 IndexedMesh roll_mesh(const RollPairGeometry& g, int k);

@@ -72,9 +72,28 @@ bool wall_matches(const Wall& w, const PeriodicMap& map, const Probe& pr, double
   auto by_overlap = [&](const WallContact& a, const WallContact& b) { return key(a) < key(b); };
   std::sort(here.begin(), here.end(), by_overlap);
   std::sort(there.begin(), there.end(), by_overlap);
-  for (std::size_t k = 0; k < here.size(); ++k) {
+  for (std::size_t k = 0; k < here.size(); ++k)
     if (std::abs(here[k].overlap - there[k].overlap) > tol) return false;
-    if (norm(map.vector(here[k].normal, pr.image) - there[k].normal) > 1e-9) return false;
+  // features at the same distance (a face and an edge of a mesh) may come in either order: within
+  // each run of equal distances compare the normals as sets, in an order rounded to 1e-6
+  auto normal_key = [](const Vec3& n) {
+    return std::array<long long, 3>{std::llround(n.x * 1e6), std::llround(n.y * 1e6),
+                                    std::llround(n.z * 1e6)};
+  };
+  auto by_key = [&](const Vec3& a, const Vec3& b) { return normal_key(a) < normal_key(b); };
+  for (std::size_t a = 0; a < here.size();) {
+    std::size_t b = a + 1;
+    while (b < here.size() && here[b].overlap - here[b - 1].overlap <= tol) ++b;
+    std::vector<Vec3> n_here, n_there;
+    for (std::size_t k = a; k < b; ++k) {
+      n_here.push_back(map.vector(here[k].normal, pr.image));
+      n_there.push_back(there[k].normal);
+    }
+    std::sort(n_here.begin(), n_here.end(), by_key);
+    std::sort(n_there.begin(), n_there.end(), by_key);
+    for (std::size_t k = 0; k < n_here.size(); ++k)
+      if (norm(n_here[k] - n_there[k]) > 1e-9) return false;
+    a = b;
   }
   return true;
 }

@@ -8,7 +8,6 @@ usage: examples/hpgr/plot_hpgr.py OUTPUT_DIR [--wall press] [--outlet product] [
        [--feed A B] [--gap G] [-o hpgr.png]
 (defaults: window from the first product to the end; output hpgr.png in OUTPUT_DIR)"""
 import argparse
-import csv
 import math
 import os
 import sys
@@ -18,21 +17,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-
-def read(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
-
-
-def column(rows, name, path):
-    if not rows or name not in rows[0]:
-        sys.exit(f"{path}: no column '{name}'")
-    return [float(r[name]) for r in rows]
-
-
-def passing(sizes_masses, sieves):
-    total = sum(m for _, m in sizes_masses)
-    return [100 * sum(m for d, m in sizes_masses if d <= s) / total for s in sieves]
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from machine_plots import column, mass_passing, read, uniform_feed_passing  # noqa: E402
 
 
 def main():
@@ -92,11 +78,9 @@ def main():
         a.legend()
         a.grid(alpha=0.3)
     mm = [1000 * s for s in sieves]
-    ax[2].semilogx(mm, passing(product, sieves), "o-", label=f"product ({mass:.3g} kg)")
-    # the feed: diameters uniform in number on [a, b] pass a sieve s with the mass fraction
-    # (s^4 - a^4) / (b^4 - a^4)
+    ax[2].semilogx(mm, mass_passing(product, sieves), "o-", label=f"product ({mass:.3g} kg)")
     a, b = args.feed
-    feed = [100 * min(1, max(0, (s**4 - a**4) / (b**4 - a**4))) for s in sieves]
+    feed = uniform_feed_passing(sieves, a, b)
     ax[2].semilogx(mm, feed, "s--", label=f"feed ({1000 * a:.0f}-{1000 * b:.0f} mm)")
     ax[2].set_xlabel("size [mm]")
     ax[2].set_ylabel("mass passing [%]")

@@ -8,7 +8,6 @@ usage: examples/jaw_crusher/plot_jaw_crusher.py OUTPUT_DIR [--wall crusher] [--o
        [--from T0] [--feed A B] [--oss S] [-o jaw_crusher.png]
 (defaults: window from the first product to the end; output jaw_crusher.png in OUTPUT_DIR)"""
 import argparse
-import csv
 import os
 import sys
 
@@ -17,16 +16,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-
-def read(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
-
-
-def column(rows, name, path):
-    if not rows or name not in rows[0]:
-        sys.exit(f"{path}: no column '{name}'")
-    return [float(r[name]) for r in rows]
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from machine_plots import column, mass_passing, read, uniform_feed_passing  # noqa: E402
 
 
 def main():

@@ -2,7 +2,6 @@
 // eccentric and cheek plates generated from their dimensions (geometry/jaw_crusher.hpp); keys in
 // docs/case-file.md (Jaw crusher machines).
 #include <cmath>
-#include <numbers>
 
 #include "comminute/geometry/jaw_crusher.hpp"
 #include "comminute/geometry/wall_group.hpp"
@@ -35,27 +34,21 @@ JawCrusherGeometry read_geometry(const CaseTable& t) {
   g.divisions = static_cast<int>(t.integer("divisions", 1, 100000, 16));
   g.side_plates = t.boolean("side_plates", true);
   if (!g.side_plates) g.overhang = t.number("overhang", Limits::positive(), g.height);
-  try {
-    check_jaw_crusher(g);
-  } catch (const GeometryError& e) {
-    t.fail(e.key(), e.what());
-  }
-  return g;
+  return checked(t, g, &check_jaw_crusher);
 }
 
 const bool registered = WallGroupRegistry::add("jaw_crusher", [](const CaseTable& t) {
   const JawCrusherGeometry g = read_geometry(t);
-  const Vec3 center = t.vec3("center", Limits::any(), {});
-  const double omega = t.number("speed_rpm", Limits::positive()) * 2 * std::numbers::pi / 60;
-  const ArchardWear wear = read_part_wear(t);
+  const MachineKeys k = read_machine_keys(t);
   auto group = std::make_unique<WallGroup>();
-  group->parts.push_back(make_part(t, "fixed_jaw", fixed_jaw_mesh(g), center, nullptr, {}, wear));
-  group->parts.push_back(make_part(t, "swing_jaw", swing_jaw_mesh(g), center,
-                                   std::make_unique<JawSwing>(jaw_opening_angle(g), omega),
-                                   jaw_pivot(g), wear));
+  group->parts.push_back(
+      make_part(t, "fixed_jaw", fixed_jaw_mesh(g), k.center, nullptr, {}, k.wear));
+  group->parts.push_back(make_part(t, "swing_jaw", swing_jaw_mesh(g), k.center,
+                                   std::make_unique<JawSwing>(jaw_opening_angle(g), k.speed),
+                                   jaw_pivot(g), k.wear));
   if (g.side_plates)
     group->parts.push_back(
-        make_part(t, "side_plates", cheek_plates_mesh(g), center, nullptr, {}, wear));
+        make_part(t, "side_plates", cheek_plates_mesh(g), k.center, nullptr, {}, k.wear));
   return group;
 });
 

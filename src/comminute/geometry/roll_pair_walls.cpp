@@ -3,6 +3,7 @@
 // (HPGR machines).
 #include <numbers>
 
+#include "comminute/geometry/ramped_rotation.hpp"
 #include "comminute/geometry/roll_pair.hpp"
 #include "comminute/geometry/wall_group.hpp"
 
@@ -11,21 +12,6 @@ namespace comminute {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180;
-
-// A roll turning about its own axis (y) towards the pinch, the speed reached linearly over the
-// ramp: sign +1 for the roll at -x (its pinch side moves down, -z), -1 for the roll at +x.
-class RollDrive : public MotionModel {
- public:
-  RollDrive(double sign, double speed, double ramp_time)
-      : sign_(sign), speed_(speed), ramp_(ramp_time) {}
-  void at(double t, Vec3& v, Vec3& w) const override {
-    v = {};
-    w = {0, sign_ * speed_ * (ramp_ > 0 ? std::min(1.0, t / ramp_) : 1.0), 0};
-  }
-
- private:
-  double sign_, speed_, ramp_;
-};
 
 RollPairGeometry read_geometry(const CaseTable& t) {
   RollPairGeometry g;
@@ -46,33 +32,28 @@ RollPairGeometry read_geometry(const CaseTable& t) {
     g.side_plate_clearance = t.number("side_plate_clearance", Limits::positive(), 0.1 * g.gap);
   else
     g.overhang = t.number("overhang", Limits::positive(), g.diameter);
-  try {
-    check_roll_pair(g);
-  } catch (const GeometryError& e) {
-    t.fail(e.key(), e.what());
-  }
-  return g;
+  return checked(t, g, &check_roll_pair);
 }
 
 const bool registered = WallGroupRegistry::add("hpgr", [](const CaseTable& t) {
   const RollPairGeometry g = read_geometry(t);
-  const Vec3 center = t.vec3("center", Limits::any(), {});
-  const double speed = t.number("speed_rpm", Limits::positive()) * 2 * std::numbers::pi / 60;
+  const MachineKeys k = read_machine_keys(t);
   const double ramp = t.number("ramp_time", Limits::non_negative(), 0.0);
-  const ArchardWear wear = read_part_wear(t);
   auto group = std::make_unique<WallGroup>();
+  // each roll turns about its own axis (y) towards the pinch: the roll at -x about +y (its
+  // pinch side moving down, -z), the roll at +x about -y
   const double c = roll_offset(g);
-  group->parts.push_back(make_part(t, "roll1", roll_mesh(g, 0), center,
-                                   std::make_unique<RollDrive>(1.0, speed, ramp), {-c, 0, 0},
-                                   wear));
-  group->parts.push_back(make_part(t, "roll2", roll_mesh(g, 1), center,
-                                   std::make_unique<RollDrive>(-1.0, speed, ramp), {c, 0, 0},
-                                   wear));
+  group->parts.push_back(make_part(t, "roll1", roll_mesh(g, 0), k.center,
+                                   std::make_unique<RampedRotation>(Vec3{0, k.speed, 0}, ramp),
+                                   {-c, 0, 0}, k.wear));
+  group->parts.push_back(make_part(t, "roll2", roll_mesh(g, 1), k.center,
+                                   std::make_unique<RampedRotation>(Vec3{0, -k.speed, 0}, ramp),
+                                   {c, 0, 0}, k.wear));
   if (g.chute)
-    group->parts.push_back(make_part(t, "chute", chute_mesh(g), center, nullptr, {}, wear));
+    group->parts.push_back(make_part(t, "chute", chute_mesh(g), k.center, nullptr, {}, k.wear));
   if (g.side_plates)
     group->parts.push_back(
-        make_part(t, "side_plates", side_plates_mesh(g), center, nullptr, {}, wear));
+        make_part(t, "side_plates", side_plates_mesh(g), k.center, nullptr, {}, k.wear));
   return group;
 });
 

@@ -1,5 +1,7 @@
 #include "comminute/geometry/wall_group.hpp"
 
+#include <numbers>
+
 #include "comminute/geometry/ball_mill.hpp"
 
 namespace comminute {
@@ -21,11 +23,13 @@ void write_part_stl(const CaseTable& t, const std::string& part, const IndexedMe
   }
 }
 
-ArchardWear read_part_wear(const CaseTable& t) {
-  ArchardWear wear;
-  wear.coefficient = t.number("wear_coefficient", Limits::non_negative(), 0.0);
-  if (wear.coefficient > 0) wear.hardness = t.number("hardness", Limits::positive());
-  return wear;
+MachineKeys read_machine_keys(const CaseTable& t) {
+  MachineKeys k;
+  k.center = t.vec3("center", Limits::any(), {});
+  k.speed = t.number("speed_rpm", Limits::positive()) * 2 * std::numbers::pi / 60;
+  k.wear.coefficient = t.number("wear_coefficient", Limits::non_negative(), 0.0);
+  if (k.wear.coefficient > 0) k.wear.hardness = t.number("hardness", Limits::positive());
+  return k;
 }
 
 WallPart make_part(const CaseTable& t, const std::string& part, IndexedMesh m, const Vec3& center,

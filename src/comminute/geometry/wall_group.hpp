@@ -46,8 +46,27 @@ std::filesystem::path part_stl_path(const std::filesystem::path& file, const std
 // created); a failure is an InputError naming `stl_file`.
 void write_part_stl(const CaseTable& t, const std::string& part, const IndexedMesh& mesh);
 
-// The table's Archard keys (wear_coefficient, hardness), shared by all its parts.
-ArchardWear read_part_wear(const CaseTable& t);
+// The keys every generated machine reads: center ([x, y, z], m, default origin), speed_rpm
+// (1/min, > 0, required; returned in rad/s) and the Archard keys of all its parts
+// (wear_coefficient, hardness).
+struct MachineKeys {
+  Vec3 center;       // m
+  double speed = 0;  // rad/s
+  ArchardWear wear;
+};
+MachineKeys read_machine_keys(const CaseTable& t);
+
+// Geometry g after its generator's check, a GeometryError turned into an InputError naming the
+// key in table t.
+template <class Geometry>
+Geometry checked(const CaseTable& t, const Geometry& g, void (*check)(const Geometry&)) {
+  try {
+    check(g);
+  } catch (const GeometryError& e) {
+    t.fail(e.key(), e.what());
+  }
+  return g;
+}
 
 // Part `part` of a generated machine: mesh m (built about the origin) shifted by `center`, its
 // STL written (write_part_stl), moving by `motion` (may be null) about `rotation_center` (given

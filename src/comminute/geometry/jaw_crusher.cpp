@@ -68,6 +68,7 @@ Vec3 jaw_pivot(const JawCrusherGeometry& g) {
 
 double jaw_opening_angle(const JawCrusherGeometry& g) {
   check_jaw_crusher(g);
+  // docs/models.md eq. J2 (geometry of the swing, ours):
   // bottom edge relative to the pivot: (-dx, -H) = -L (sin beta, cos beta); turned by a about +y
   // its x is -L sin(beta + a), which is css + throw - gape at a = alpha_open
   const double dx = g.gape - g.closed_side_setting, L = std::hypot(dx, g.height);

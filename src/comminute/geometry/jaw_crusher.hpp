@@ -20,8 +20,9 @@
 //   alpha(t) = alpha_open (1 - cos(Omega t)) / 2,
 // (an infinitely long toggle), with alpha_open the angle that puts the bottom edge at x = css +
 // throw exactly; the closed-side setting and the throw are thus reached exactly at the dead
-// centres (t = 0 and t = pi / Omega), and in between the bottom edge is within a few per cent of
-// the harmonic stroke (docs/models.md, "Jaw crusher").
+// centres (t = 0 and t = pi / Omega), and in between the bottom edge stays within 0.14 % of the
+// throw of the harmonic stroke for the laboratory jaw (docs/models.md, "Roll press and jaw
+// crusher", J1-J2).
 #include "comminute/geometry/stl_file.hpp"
 
 namespace comminute {

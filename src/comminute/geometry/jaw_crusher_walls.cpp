@@ -11,7 +11,8 @@ namespace comminute {
 namespace {
 
 // The swing about the pivot, alpha(t) = alpha_open (1 - cos(Omega t)) / 2 about +y: its angular
-// velocity alpha'(t) = alpha_open Omega sin(Omega t) / 2.
+// velocity alpha'(t) = alpha_open Omega sin(Omega t) / 2 (docs/models.md eq. J1, a simplification
+// of the eccentric and toggle linkage, ours).
 class JawSwing : public MotionModel {
  public:
   JawSwing(double alpha_open, double omega) : alpha_(alpha_open), omega_(omega) {}

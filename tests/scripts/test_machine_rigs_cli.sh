@@ -2,7 +2,8 @@
 # The machine rigs examples/hpgr and examples/jaw_crusher through the command line: `comminute
 # check` accepts each as it is (exit 0) and writes the generated STL files of its parts; a
 # shortened run of each writes the per-roll (per-jaw) force and power columns, logs product in
-# the outlet, and its plot script reads the outputs and draws the plot.
+# the outlet, and its plot script reads the outputs and draws the plot; the jaw crusher continued
+# from a checkpoint ends bit for bit as the straight run.
 # usage: test_machine_rigs_cli.sh <comminute> <source-dir>
 set -euo pipefail
 bin=$1 src=$2
@@ -54,6 +55,17 @@ assert float(out[-1]["product_mass [kg]"]) > 0, "no jaw-crusher product"
 print(f"ok: HPGR roll forces {f1:.4g}, {f2:.4g} (sums over rows), {len(log)} leaving; jaw product "
       f"{out[-1]['product_mass [kg]']} kg")
 PY
+# the swinging jaw's motion (its time and pose) continues from a checkpoint bit for bit
+sed -e 's/^end_time = 0.65 /end_time = 0.3 /' "$tmp/jaw_crusher/jaw_crusher.toml" \
+  > "$tmp/jaw_crusher/first.toml"
+"$bin" run "$tmp/jaw_crusher/first.toml" -o "$tmp/jaw_crusher/restarted" --threads 1 > /dev/null 2>&1
+"$bin" run "$tmp/jaw_crusher/jaw_crusher.toml" -o "$tmp/jaw_crusher/restarted" --threads 1 \
+  --restart "$tmp/jaw_crusher/restarted/checkpoint.h5" > "$tmp/jaw_crusher/restart.log" 2>&1 \
+  || { cat "$tmp/jaw_crusher/restart.log"; echo "FAIL: restart of the jaw crusher"; exit 1; }
+[ "$(tail -1 "$tmp/jaw_crusher/output/timeseries.csv")" = \
+  "$(tail -1 "$tmp/jaw_crusher/restarted/timeseries.csv")" ] \
+  || { echo "FAIL: the restarted jaw crusher differs from the straight run"; exit 1; }
+echo "ok: jaw crusher restarted at 0.3 s ends bit for bit as the straight run"
 /usr/bin/python3 "$src/examples/hpgr/plot_hpgr.py" "$tmp/hpgr/output"
 /usr/bin/python3 "$src/examples/jaw_crusher/plot_jaw_crusher.py" "$tmp/jaw_crusher/output"
 [ -s "$tmp/hpgr/output/hpgr.png" ] && [ -s "$tmp/jaw_crusher/output/jaw_crusher.png" ] \

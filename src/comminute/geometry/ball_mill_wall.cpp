@@ -7,6 +7,7 @@
 #include "comminute/geometry/ball_mill.hpp"
 #include "comminute/geometry/generated_mesh.hpp"
 #include "comminute/geometry/mesh_wall.hpp"
+#include "comminute/geometry/ramped_rotation.hpp"
 
 namespace comminute {
 
@@ -44,8 +45,8 @@ std::unique_ptr<MotionModel> read_drive(const CaseTable& t, const BallMillGeomet
   const double d = t.number("ball_diameter", Limits::non_negative(), 0.0);
   if (d >= g.diameter) t.fail("ball_diameter", "must be below the mill diameter");
   // turning about the mill axis (+y) at a fraction of the critical speed
-  return std::make_unique<RampedTurn>(Vec3{0, 1, 0}, f * critical_speed(g.diameter, d),
-                                      t.number("ramp_time", Limits::non_negative(), 0.0));
+  return std::make_unique<RampedRotation>(Vec3{0, f * critical_speed(g.diameter, d), 0},
+                                          t.number("ramp_time", Limits::non_negative(), 0.0));
 }
 
 const bool registered = WallRegistry::add("ball_mill", [](const CaseTable& t) {

@@ -1,16 +1,10 @@
 #include "comminute/geometry/generated_mesh.hpp"
 
-#include <algorithm>
 #include <filesystem>
 
 #include "comminute/geometry/ball_mill.hpp"
 
 namespace comminute {
-
-void RampedTurn::at(double t, Vec3& v, Vec3& w) const {
-  v = {};
-  w = axis_ * (omega_ * (ramp_ > 0 ? std::min(1.0, t / ramp_) : 1.0));
-}
 
 void write_stl_if_asked(const CaseTable& t, const IndexedMesh& m) {
   if (!t.has("stl_file")) return;

@@ -8,6 +8,7 @@
 #include "comminute/geometry/generated_mesh.hpp"
 #include "comminute/geometry/mesh_wall.hpp"
 #include "comminute/geometry/mixer.hpp"
+#include "comminute/geometry/ramped_rotation.hpp"
 
 namespace comminute {
 
@@ -51,8 +52,8 @@ std::unique_ptr<MotionModel> read_speed(const CaseTable& t, const MixerGeometry&
   // omega = 2 pi N / 60 (N in rpm) = v_tip / r_tip (docs/models.md eq. X1)
   const double omega = t.has("rpm") ? t.number("rpm", Limits::any()) * 2 * std::numbers::pi / 60
                                     : t.number("tip_speed", Limits::any()) / g.tip_radius();
-  return std::make_unique<RampedTurn>(Vec3{0, 0, 1}, omega,
-                                      t.number("ramp_time", Limits::non_negative(), 0.0));
+  return std::make_unique<RampedRotation>(Vec3{0, 0, omega},
+                                          t.number("ramp_time", Limits::non_negative(), 0.0));
 }
 
 std::unique_ptr<MeshWall> placed(IndexedMesh m, const Vec3& center,

@@ -233,8 +233,14 @@ DemCase build_dem_case(const CaseTable& root) {
   read_materials(root, sim);
   read_interactions(root, sim);
   read_contact(root, sim);
-  const auto walls = root.tables("walls");
-  for (std::size_t k = 0; k < walls.size(); ++k) sim.walls.push_back(build_wall(walls[k], k, sim));
+  // the table each wall came from (a generated machine gives several walls from one table)
+  std::vector<CaseTable> walls;
+  const auto wall_tables = root.tables("walls");
+  for (std::size_t k = 0; k < wall_tables.size(); ++k)
+    for (auto& w : build_walls(wall_tables[k], k, sim)) {
+      sim.walls.push_back(std::move(w));
+      walls.push_back(wall_tables[k]);
+    }
 
   const auto inserts = root.tables("insert");
   if (inserts.empty()) root.fail({}, "no particles: add at least one [[insert]] table");

@@ -19,6 +19,7 @@ constexpr std::array<const char*, 6> kComponents{"xx", "yy", "zz", "xy", "xz", "
 BedStatistics::BedStatistics(BedStatisticsOptions options)
     : o_(std::move(options)), region_(o_.region) {
   if (o_.every == 0) throw Error("bed statistics: 'every' must be at least 1");
+  if (o_.layers == 0) throw Error("bed statistics: at least one layer");
 }
 
 void BedStatistics::declare_contact_state(ContactPipeline& pipeline) {
@@ -83,12 +84,14 @@ void BedStatistics::post_force(Simulation& sim) {
   if (sampling_ && cs.moment.size() != p.size())
     throw Error(name() + ": the particles changed between the force loops and post_force");
   const StatGridSpec& s = region_.spec();
-  const std::size_t nl = region_.size();
-  std::vector<SymTensor> layer(nl, SymTensor{});
-  std::vector<double> layer_count(nl, 0.0);
+  struct Member {
+    double height;  // m, of the centre above the region's bottom
+    SymTensor moment;
+  };
+  std::vector<Member> members;
   std::vector<std::uint32_t> counts;
   SymTensor total{};
-  double solid = 0, top = -std::numeric_limits<double>::infinity();
+  double solid = 0, top = 0;
   const double bottom = s.cylindrical ? s.z_min : s.lo.z;
   for (std::size_t i = 0; i < p.owned(); ++i) {
     const double vol = 4.0 / 3.0 * std::numbers::pi * std::pow(p.radius[i], 3);
@@ -96,22 +99,17 @@ void BedStatistics::post_force(Simulation& sim) {
     for (double& v : sigma) v /= vol;
     for (std::size_t k = 0; k < 6; ++k) sim.particles.field(fields_[k])[i] = sigma[k];
     sim.particles.field(fields_[6])[i] = cs.load_bearing[i];
-    const std::size_t c = region_.cell_of(p.x[i]);
-    if (c == StatGrid::outside) continue;
-    const auto e = region_.basis_at(p.x[i]);
-    const SymTensor m = in_basis(cs.moment[i], e);
-    for (std::size_t k = 0; k < 6; ++k) {
-      layer[c][k] += m[k];
-      total[k] += m[k];
-    }
-    layer_count[c] += 1;
+    if (region_.cell_of(p.x[i]) == StatGrid::outside) continue;
+    const Member m{(s.cylindrical ? dot(p.x[i] - s.origin, s.axis) : p.x[i].z) - bottom,
+                   in_basis(cs.moment[i], region_.basis_at(p.x[i]))};
+    for (std::size_t k = 0; k < 6; ++k) total[k] += m.moment[k];
     counts.push_back(cs.load_bearing[i]);
     solid += vol;
-    const double height = s.cylindrical ? dot(p.x[i] - s.origin, s.axis) : p.x[i].z;
-    top = std::max(top, height + p.radius[i]);
+    top = std::max(top, m.height + p.radius[i]);
+    members.push_back(m);
   }
   const double area = cross_section();
-  const double h = counts.empty() ? 0.0 : top - bottom;
+  const double h = top;  // the bed's height above the region's bottom
   const double vbed = area * h;
   const auto [z, zm] = coordination(counts);
   double ends = 0;
@@ -124,7 +122,7 @@ void BedStatistics::post_force(Simulation& sim) {
   r.mechanical_coordination = zm;
   r.bed_height = h;
   r.void_ratio = solid > 0 ? vbed / solid - 1 : 0.0;
-  r.axial_stress = vbed > 0 ? -total[2] / vbed : 0.0;  // compression positive
+  r.axial_stress = vbed > 0 ? -total[2] / vbed + 0.0 : 0.0;  // compression positive (no -0)
   r.mean_stress = vbed > 0 ? (total[0] + total[1] + total[2]) / (3 * vbed) : 0.0;
   if (o_.load_wall >= 0) {
     const Vec3 axis = s.cylindrical ? s.axis : Vec3{0, 0, 1};
@@ -132,9 +130,19 @@ void BedStatistics::post_force(Simulation& sim) {
         std::abs(dot(sim.walls[static_cast<std::size_t>(o_.load_wall)]->force, axis)) / area;
   }
   rows_.push_back(r);
+  // layers: equal slices of the bed's current height
+  const std::size_t nl = o_.layers;
+  std::vector<SymTensor> layer(nl, SymTensor{});
+  std::vector<double> layer_count(nl, 0.0);
+  for (const Member& m : members) {
+    const double f = h > 0 ? m.height / h * static_cast<double>(nl) : 0.0;
+    const std::size_t c = std::min(nl - 1, static_cast<std::size_t>(std::max(0.0, f)));
+    for (std::size_t k = 0; k < 6; ++k) layer[c][k] += m.moment[k];
+    layer_count[c] += 1;
+  }
   for (std::size_t c = 0; c < nl; ++c) {
     SymTensor st = layer[c];
-    for (double& v : st) v /= region_.volume(c);
+    for (double& v : st) v = vbed > 0 ? v / (vbed / static_cast<double>(nl)) : 0.0;
     layers_.push_back({sim.time, static_cast<double>(c), layer_count[c], st});
   }
   if (o_.force_chains) {

@@ -7,13 +7,14 @@
 //   - the Love–Weber stress of each particle, σ_i = (1/V_i) Σ_c f_c ⊗ l_c (Christoffersen,
 //     Mehrabadi & Nemat-Nasser 1981, J. Appl. Mech. 48 eq. 2.9), as particle fields
 //     bed.stress_xx … bed.stress_yz [Pa] and bed.load_bearing [-] in the particle snapshots;
-//   - per layer of the region (layers along its axis) the bulk stress Σ_i V_i σ_i / V_layer;
+//   - per layer (equal slices of the bed's current height along the region's axis) the bulk
+//     stress Σ_i V_i σ_i / V_layer;
 //   - the void ratio e = A·h/V_s − 1 (A the region's cross-section, h the height of the highest
 //     particle top above the region's bottom, V_s the particles' volume) and the axial stress
 //     (Love–Weber over the bed, and from the load wall's force / A), so e vs log σ is the
 //     normal compression line;
 //   - the force chains: the load-bearing contacts as line segments with their forces (VTK).
-// The region is a StatGrid with one cell across and `layers` cells along its axis.
+// The region is a StatGrid of one cell (a box, its axis z; or a cylinder).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -27,8 +28,9 @@ namespace comminute::analysis {
 
 struct BedStatisticsOptions {
   std::string name = "bed_statistics";
-  StatGridSpec region;   // cells = (1, 1, layers)
-  double threshold = 0;  // N, load-bearing normal force
+  StatGridSpec region;     // the bed's region (one cell)
+  std::size_t layers = 1;  // equal slices of the bed's height
+  double threshold = 0;    // N, load-bearing normal force
   std::uint64_t every = 1000;
   int load_wall = -1;  // wall index whose force gives the axial stress, or -1
   bool force_chains = true;

@@ -16,14 +16,11 @@ std::size_t count(const CaseTable& t, const char* key, std::int64_t fallback) {
 }
 
 // A table's grid: `shape` = "box" (lo, hi, cells = [nx, ny, nz]) or "cylinder" (origin, axis,
-// radius, inner_radius, z_min, z_max, cells = [n_r, n_theta, n_axial]). `layers` (bed): the
-// cells are [1, 1, layers].
-analysis::StatGridSpec read_grid(const CaseTable& t, bool layers) {
+// radius, inner_radius, z_min, z_max, cells = [n_r, n_theta, n_axial]). `region` (bed): one cell.
+analysis::StatGridSpec read_grid(const CaseTable& t, bool region) {
   analysis::StatGridSpec g;
   g.cylindrical = t.choice("shape", {"box", "cylinder"}) == "cylinder";
-  if (layers) {
-    g.cells = {1, 1, count(t, "layers", 1)};
-  } else {
+  if (!region) {
     const auto n = t.numbers("cells", Limits::positive());
     if (n.size() != 3) t.fail("cells", "give three cell counts");
     for (std::size_t k = 0; k < 3; ++k) {
@@ -81,6 +78,7 @@ void add_grid(const CaseTable& t, Simulation& sim) {
 void add_bed(const CaseTable& t, Simulation& sim) {
   analysis::BedStatisticsOptions o;
   o.region = read_grid(t, true);
+  o.layers = count(t, "layers", 1);
   o.threshold = t.number("force_threshold", Limits::non_negative(), 0.0);
   o.every =
       static_cast<std::uint64_t>(t.has("every") ? t.integer("every", 1, 1'000'000'000) : 1000);

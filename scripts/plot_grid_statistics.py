@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Draws the stress map of a comminute grid_statistics.csv into one PNG: the mean stress and the
 largest shear stress (Pa) per cell, averaged over the grid's second direction (a box: y, shown in
-x–z; a cylinder: theta, shown in r–axial). Columns are found by their headers.
+x–z; a cylinder: theta, shown in r–axial), and for a cylinder the mean stress over its cross-section
+(r–theta, averaged along the axis). Columns are found by their headers.
 
 usage: scripts/plot_grid_statistics.py output/grid_statistics.csv [-o grid_statistics.png]
 (default output: grid_statistics.png next to the CSV)"""
@@ -49,7 +50,20 @@ def main():
     ni, nk = i.max() + 1, k.max() + 1
     ax_a = np.array([a[i == m][0] for m in range(ni)])
     ax_c = np.array([c[k == m][0] for m in range(nk)])
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    fig = plt.figure(figsize=(16 if cylinder else 11, 4.5))
+    n = 3 if cylinder else 2
+    axes = [fig.add_subplot(1, n, 1), fig.add_subplot(1, n, 2)]
+    if cylinder:
+        j = column(cols, "j [-]").astype(int)
+        nj = j.max() + 1
+        theta = np.array([column(cols, "centre_theta [rad]")[j == m][0] for m in range(nj)])
+        v = column(cols, "mean_stress [Pa]")
+        polar = np.array([[v[(i == m) & (j == q)].mean() for q in range(nj)] for m in range(ni)])
+        ax = fig.add_subplot(1, n, 3, projection="polar")
+        ax.grid(False)
+        pc = ax.pcolormesh(theta, ax_a, polar, shading="nearest", cmap="coolwarm")
+        fig.colorbar(pc, ax=ax)
+        ax.set_title("mean stress σm over the cross-section (Pa)")
     for ax, name, title in zip(axes, ["mean_stress [Pa]", "tau_max [Pa]"],
                                ["mean stress σm (Pa, tension > 0)", "largest shear τmax (Pa)"]):
         v = column(cols, name)

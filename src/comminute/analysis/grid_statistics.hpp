@@ -33,7 +33,9 @@ struct GridStatisticsOptions {
   int rotate_with = -1;                                  // wall index, or -1 (fixed)
   std::size_t spectrum_bins = 50;                        // stress bins of ṅ(σ)
   double spectrum_max = 0;                               // Pa; 0: the largest cell stress
-  Cadence cadence;                                       // output cadence (unset: default)
+  // output cadence; by default the files are written at the start and the end of the run only
+  // (rewriting thousands of cells at the time-series cadence would cost more than the sampling)
+  Cadence cadence{1e300, 0};
 };
 
 class GridStatistics final : public Module, public SeriesSource {

@@ -30,6 +30,19 @@ double sphere_volume(double r) {
   return 4.0 / 3.0 * std::numbers::pi * r * r * r;
 }
 
+// Adds bed statistics measuring every step, sets up and takes one step.
+const analysis::BedStatistics& measure_once(Simulation& sim, analysis::BedStatisticsOptions o) {
+  o.every = 1;
+  auto bed = std::make_unique<analysis::BedStatistics>(o);
+  const auto* b = bed.get();
+  bed->register_fields(sim.particles);
+  sim.modules.push_back(std::move(bed));
+  sim.dt = 1e-8;
+  sim.setup();
+  sim.step();
+  return *b;
+}
+
 }  // namespace
 
 TEST(ContactStress, TwoPressedSpheresGiveTheAnalyticTensor) {
@@ -90,14 +103,7 @@ TEST(BedStatistics, CoordinationOfASimpleCubicLattice) {
   analysis::BedStatisticsOptions o;
   o.region.lo = {-r, -r, -r};
   o.region.hi = {a * n, a * n, a * n};
-  o.every = 1;
-  auto bed = std::make_unique<analysis::BedStatistics>(o);
-  auto* b = bed.get();
-  bed->register_fields(sim->particles);
-  sim->modules.push_back(std::move(bed));
-  sim->dt = 1e-8;
-  sim->setup();
-  sim->step();
+  const auto* b = &measure_once(*sim, o);
   ASSERT_EQ(b->rows().size(), 1u);
   EXPECT_DOUBLE_EQ(b->rows()[0].contacts, 3.0 * n * n * (n - 1));
   EXPECT_DOUBLE_EQ(b->rows()[0].coordination, 6.0 * (n - 1) / n);
@@ -121,15 +127,8 @@ TEST(BedStatistics, ThresholdAboveEveryForceLeavesNoLoadBearingContact) {
   analysis::BedStatisticsOptions o;
   o.region.lo = {-2 * r, -2 * r, -2 * r};
   o.region.hi = {4 * r, 2 * r, 2 * r};
-  o.every = 1;
   o.threshold = 1e3;  // N, far above the contact's ~1e-4 N
-  auto bed = std::make_unique<analysis::BedStatistics>(o);
-  auto* b = bed.get();
-  bed->register_fields(sim->particles);
-  sim->modules.push_back(std::move(bed));
-  sim->dt = 1e-8;
-  sim->setup();
-  sim->step();
+  const auto* b = &measure_once(*sim, o);
   EXPECT_EQ(b->rows()[0].contacts, 0.0);
   EXPECT_TRUE(b->chains().empty());
 }

@@ -55,6 +55,18 @@ void write_arrays(std::ostream& os, const std::vector<VtkArray>& arrays, Appende
   }
 }
 
+// The raw appended block (each array: its UInt64 byte count, then its bytes) and the file's end.
+void write_appended(std::ostream& os, const Appended& app) {
+  os << "<AppendedData encoding=\"raw\">\n_";
+  for (const auto* b : app.blocks) {
+    const std::uint64_t count = b->size();
+    os.write(reinterpret_cast<const char*>(&count), sizeof count);
+    if (!b->empty())
+      os.write(reinterpret_cast<const char*>(b->data()), static_cast<std::streamsize>(b->size()));
+  }
+  os << "\n</AppendedData>\n</VTKFile>\n";
+}
+
 }  // namespace
 
 VtkArray vtk_array(std::string name, std::span<const double> v) {
@@ -151,14 +163,8 @@ void write_vtp(const std::filesystem::path& path, const VtkPolyData& pd) {
   cells("Verts", vconn_b, voff_b);
   cells("Lines", lconn_b, loff_b);
   cells("Polys", pconn_b, poff_b);
-  os << "</Piece>\n</PolyData>\n<AppendedData encoding=\"raw\">\n_";
-  for (const auto* b : app.blocks) {
-    const std::uint64_t count = b->size();
-    os.write(reinterpret_cast<const char*>(&count), sizeof count);
-    if (!b->empty())
-      os.write(reinterpret_cast<const char*>(b->data()), static_cast<std::streamsize>(b->size()));
-  }
-  os << "\n</AppendedData>\n</VTKFile>\n";
+  os << "</Piece>\n</PolyData>\n";
+  write_appended(os, app);
   file.commit();
 }
 
@@ -185,14 +191,8 @@ void write_vts(const std::filesystem::path& path, const VtkStructuredGrid& g) {
   write_arrays(os, g.cell_data, app, false);
   os << "</CellData>\n<Points>\n";
   write_arrays(os, points, app, false);
-  os << "</Points>\n</Piece>\n</StructuredGrid>\n<AppendedData encoding=\"raw\">\n_";
-  for (const auto* b : app.blocks) {
-    const std::uint64_t count = b->size();
-    os.write(reinterpret_cast<const char*>(&count), sizeof count);
-    if (!b->empty())
-      os.write(reinterpret_cast<const char*>(b->data()), static_cast<std::streamsize>(b->size()));
-  }
-  os << "\n</AppendedData>\n</VTKFile>\n";
+  os << "</Points>\n</Piece>\n</StructuredGrid>\n";
+  write_appended(os, app);
   file.commit();
 }
 

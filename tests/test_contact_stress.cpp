@@ -8,6 +8,7 @@
 
 #include "comminute/analysis/bed_statistics.hpp"
 #include "comminute/engine/contact_pipeline.hpp"
+#include "comminute/geometry/periodic_map.hpp"
 #include "comminute/geometry/plane_wall.hpp"
 #include "dem_fixture.hpp"
 
@@ -131,4 +132,37 @@ TEST(BedStatistics, ThresholdAboveEveryForceLeavesNoLoadBearingContact) {
   const auto* b = &measure_once(*sim, o);
   EXPECT_EQ(b->rows()[0].contacts, 0.0);
   EXPECT_TRUE(b->chains().empty());
+}
+
+TEST(ContactStress, GhostMomentsFoldOntoOwnersTurnedBackInASector) {
+  // a quarter sector about z; A at angle α, B at 90° − α, ρ = 5 cm: B's image (turned by −90°)
+  // sits at −α, so A and the image touch with overlap δ along +y: on A, M = −F (r − δ/2) ŷŷ; on
+  // B (in its own frame, the image's contact turned back by +90°), M = −F (r − δ/2) x̂x̂
+  auto sim = make_simulation(DemSetup{});
+  sim->set_periodic(PeriodicMap::sector(2, {0, 0, 0}, 4));
+  sim->options.skin = 0.0004;
+  const double r = 1e-3, delta = 2e-5, rho = 0.05;
+  const double a = std::asin((2 * r - delta) / (2 * rho));
+  const double b = 0.5 * std::numbers::pi - a;
+  add_sphere(*sim, {rho * std::cos(a), rho * std::sin(a), 0}, r);
+  add_sphere(*sim, {rho * std::cos(b), rho * std::sin(b), 0}, r);
+  sim->modules.push_back(std::make_unique<ArmAtSetup>());
+  sim->dt = 1e-7;
+  sim->setup();
+  const ContactStress& cs = *sim->contacts().stress();
+  const double estar = 1e7 / (2 * (1 - 0.3 * 0.3));
+  const double f = 4.0 / 3.0 * estar * std::sqrt(0.5 * r) * std::pow(delta, 1.5);  // Hertz
+  const double m = -f * (r - 0.5 * delta);
+  // positions on a circle of 5 cm carry rounding of ~1e-17 m; the overlap (2e-5 m) is known to
+  // ~1e-12 relative and the turn by cos/sin to 1e-16: 1e-9 of the moment is far above both and
+  // far below a missing or unturned fold (100 % of a component)
+  const double tol = 1e-9 * std::abs(m);
+  const SymTensor expect_a{0, m, 0, 0, 0, 0}, expect_b{m, 0, 0, 0, 0, 0};
+  const std::size_t ia = sim->particles.x[0].x > sim->particles.x[1].x ? 0 : 1, ib = 1 - ia;
+  for (std::size_t k = 0; k < 6; ++k) {
+    EXPECT_NEAR(cs.moment[ia][k], expect_a[k], tol) << "A component " << k;
+    EXPECT_NEAR(cs.moment[ib][k], expect_b[k], tol) << "B component " << k;
+  }
+  EXPECT_EQ(cs.load_bearing[0], 1u);
+  EXPECT_EQ(cs.load_bearing[1], 1u);
 }

@@ -11,9 +11,12 @@
 #include <numbers>
 
 #include "comminute/analysis/grid_statistics.hpp"
+#include "comminute/core/csv_columns.hpp"
 #include "comminute/core/rng.hpp"
 #include "comminute/geometry/box_wall.hpp"
 #include "comminute/io/output/dataset_writer.hpp"
+#include "comminute/pbm/selection_function.hpp"
+#include "comminute/pbm/size_grid.hpp"
 #include "dem_fixture.hpp"
 #include "temp_dir.hpp"
 
@@ -210,4 +213,41 @@ TEST(GridStatistics, CheckpointRestartIsBitForBit) {
     EXPECT_EQ(x.stress, y.stress) << "cell " << c;  // bit for bit: same arithmetic, same order
     EXPECT_EQ(x.contact_frequency, y.contact_frequency) << "cell " << c;
   }
+}
+
+TEST(GridStatistics, SpectrumHoldsEveryContactAndFeedsTheStressRate) {
+  analysis::GridStatistics* g = nullptr;
+  auto sim = column(&g, 0.0, 1500);  // the column settling: contacts begin in every layer
+  const auto tables = g->tables(*sim);
+  // ∫ ṅ dσ over the bins (Σ ṅ_b Δσ) is the grid's mean contact frequency per particle: every
+  // contact begun is in one bin (rounding only)
+  double particles = 0, begun = 0;
+  for (std::size_t c = 0; c < g->grid().size(); ++c) {
+    const auto a = g->average(c);
+    particles += a.particles;
+    begun += a.contact_frequency * a.particles;
+  }
+  ASSERT_GT(begun, 0);
+  const comminute::testing::TestDir dir;
+  tables[1].write(dir.path());
+  const auto spectrum = CsvColumns::read(dir.path() / "grid_statistics_spectrum.csv");
+  const auto s = spectrum.column("stress [Pa]"), n = spectrum.column("frequency [1/(s Pa)]");
+  const double width = 2 * s[0];
+  double sum = 0;
+  for (double v : n) sum += v * width;
+  EXPECT_NEAR(sum, begun / particles, 1e-12 * begun / particles);
+  // the pbm rate `stress` reads the file as written; with a strength below every tabulated
+  // stress its rate is λ times the trapezoid integral of the table (ContactFrequencySpectrum)
+  std::ofstream(dir.path() / "rate.toml")
+      << "model = \"stress\"\nlambda = 0.5\nfrequency_file = \"grid_statistics_spectrum.csv\"\n"
+         "strength = \"power_law\"\nsigma0 = 1e-9\nm = 1.0\n";
+  const CaseFile f = CaseFile::load(dir.path() / "rate.toml");
+  const auto grid = pbm::SizeGrid::geometric(4e-3, std::sqrt(2.0), 4, pbm::GridCoordinate::size,
+                                             std::numbers::pi / 6);
+  const auto rate =
+      pbm::SelectionFunctionRegistry::create("stress", f.root(), pbm::ModelContext{grid, 2500.0});
+  double trapezoid = 0;
+  for (std::size_t k = 1; k < s.size(); ++k)
+    trapezoid += 0.5 * (n[k] + n[k - 1]) * (s[k] - s[k - 1]);
+  EXPECT_NEAR(rate->rate(1e-3, 0.0), 0.5 * trapezoid, 1e-12 * trapezoid);  // same sums
 }

@@ -111,6 +111,19 @@ TEST(BedStatistics, CoordinationOfASimpleCubicLattice) {
   // no rattlers (every sphere has 3 to 6 contacts): the mechanical number is the same
   EXPECT_DOUBLE_EQ(b->rows()[0].mechanical_coordination, 6.0 * (n - 1) / n);
   EXPECT_EQ(b->chains().size(), static_cast<std::size_t>(3 * n * n * (n - 1)));
+  // void ratio: region cross-section (a n + r)², bed height from its bottom (−r) to the top
+  // sphere's top, (n − 1) a + 2r; solids n³ (4/3)π r³ (the step moved nothing measurable: 1e-8 s)
+  const double side = a * n + r, h = (n - 1) * a + 2 * r;
+  const double e = side * side * h / (n * n * n * sphere_volume(r)) - 1;
+  EXPECT_NEAR(b->rows()[0].bed_height, h, 1e-12);
+  EXPECT_NEAR(b->rows()[0].void_ratio, e, 1e-9 * e);
+  // axial stress: each of the n²(n − 1) vertical contacts adds F (2r − δ) to −Σ M_zz (Hertz F
+  // with δ = 2r − a = 1e-6 m), over A h; 1e-4: the step's half kick gives the outer spheres
+  // ~1e-7 m/s and the contact damping then adds ~1e-5 of F (a wrong lever or count is ≥ 1e-3)
+  const double estar = 1e7 / (2 * (1 - 0.3 * 0.3)), delta = 2 * r - a;
+  const double f = 4.0 / 3.0 * estar * std::sqrt(0.5 * r) * std::pow(delta, 1.5);
+  const double axial = n * n * (n - 1) * f * a / (side * side * h);
+  EXPECT_NEAR(b->rows()[0].axial_stress, axial, 1e-4 * axial);
 }
 
 TEST(BedStatistics, ThorntonMechanicalCoordinationLeavesOutRattlers) {

@@ -119,7 +119,7 @@ TEST(BedStatistics, CoordinationOfASimpleCubicLattice) {
   EXPECT_NEAR(b->rows()[0].void_ratio, e, 1e-9 * e);
   // axial stress: each of the n²(n − 1) vertical contacts adds F (2r − δ) to −Σ M_zz (Hertz F
   // with δ = 2r − a = 1e-6 m), over A h; 1e-4: the step's half kick gives the outer spheres
-  // ~1e-7 m/s and the contact damping then adds ~1e-5 of F (a wrong lever or count is ≥ 1e-3)
+  // ~1e-7 m/s and the contact damping then adds ~1e-5 of F (the lever r for r − δ/2: 2.5e-4)
   const double estar = 1e7 / (2 * (1 - 0.3 * 0.3)), delta = 2 * r - a;
   const double f = 4.0 / 3.0 * estar * std::sqrt(0.5 * r) * std::pow(delta, 1.5);
   const double axial = n * n * (n - 1) * f * a / (side * side * h);

@@ -12,6 +12,7 @@
 #include "comminute/contact/loading_record.hpp"
 #include "comminute/contact/rolling_resistance.hpp"
 #include "comminute/core/error.hpp"
+#include "comminute/engine/contact_stress.hpp"
 #include "comminute/engine/module.hpp"
 
 namespace comminute {
@@ -28,6 +29,7 @@ class ContactPipeline {
     cohesion_ = cohesion;
     layout_ = ContactStateStore{};
     loading_.reset();
+    stress_.reset();
     law.declare(layout_);
     if (rolling) rolling->declare(layout_);
     assembling_ = true;
@@ -42,6 +44,13 @@ class ContactPipeline {
       loading_->declare(module_layout());
     }
   }
+  // For modules, during assemble(): per-particle contact stress and the contact list
+  // (contact_stress.hpp), filled by the force loops on the steps a module arms.
+  ContactStress& require_contact_stress() {
+    if (!assembling_) throw Error("contact stress is asked for while the contacts are assembled");
+    if (!stress_) stress_ = std::make_unique<ContactStress>();
+    return *stress_;
+  }
   ContactStateStore& module_layout() {
     if (!assembling_)
       throw Error("per-contact slots are declared while the contacts are assembled");
@@ -51,6 +60,9 @@ class ContactPipeline {
   const ContactStateStore& layout() const { return layout_; }
   // null unless a module asked for it
   const LoadingRecord* loading() const { return loading_.get(); }
+  // null unless a module asked for it; the force loops and modules write it (not part of the
+  // contact model's constness)
+  ContactStress* stress() const { return stress_.get(); }
 
   void evaluate(const ContactKinematics& k, const PairParameters& p, const StateRef& s,
                 ContactForces& out) const {
@@ -77,6 +89,7 @@ class ContactPipeline {
   RollingResistance* rolling_ = nullptr;
   Cohesion* cohesion_ = nullptr;
   std::unique_ptr<LoadingRecord> loading_;
+  std::unique_ptr<ContactStress> stress_;
   bool assembling_ = false;
   ContactStateStore layout_;
 };

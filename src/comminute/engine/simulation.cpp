@@ -57,6 +57,7 @@ void Simulation::step() {
   for (auto& m : modules) m->pre_force(*this);
   compute_forces();
   for (auto& m : modules) m->post_force(*this);
+  if (ContactStress* cs = contacts_.stress()) cs->disarm();
   particles.drop_ghosts();
   const bool bad = VelocityVerlet::kick(particles, dt);
   ++step_count;
@@ -148,11 +149,17 @@ void Simulation::compute_forces() {
     w->torque = {};
   }
   elastic_energy_ = 0;
+  ContactStress* stress = contacts_.stress();
+  if (stress) stress->begin(particles.size());
   pair_loop_.run(particles, materials, tracker_.pairs(), contacts_, pair_state_, dt, ledger,
                  elastic_energy_);
   wall_loop_.run(particles, materials, walls, tracker_.wall_candidates(), contacts_, wall_state_,
                  dt, ledger, elastic_energy_, wall_contacts_);
   if (ghosts_.active()) ghosts_.fold(particles);
+  if (stress && ghosts_.active())
+    stress->fold(particles.owned(), particles.ghost_owner, [this](std::size_t g, const Vec3& v) {
+      return ghosts_.map.inverse_vector(v, ghosts_.image(g));
+    });
 }
 
 Observables Simulation::observe() const {

@@ -12,6 +12,7 @@
 #include "comminute/io/case/lammps_data.hpp"
 #include "comminute/io/case/machine_case.hpp"
 #include "comminute/io/case/periodic_case.hpp"
+#include "comminute/io/case/statistics_case.hpp"
 #include "comminute/io/case/wall_builders.hpp"
 
 namespace comminute::io {
@@ -258,6 +259,7 @@ DemCase build_dem_case(const CaseTable& root) {
   }
   check_wall_names(walls, sim);
   add_machines(root, walls, sim);
+  add_statistics(root, sim);
   read_periodic(root, sim, reach);
   return out;
 }

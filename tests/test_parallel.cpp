@@ -8,6 +8,7 @@
 #include "breakage_engine_fixture.hpp"
 #include "comminute/core/parallel.hpp"
 #include "comminute/core/rng.hpp"
+#include "comminute/engine/contact_pipeline.hpp"
 #include "comminute/geometry/box_wall.hpp"
 #include "dem_fixture.hpp"
 
@@ -16,7 +17,7 @@ using namespace comminute::testing;
 
 namespace {
 
-std::unique_ptr<Simulation> lattice_bed(int threads) {
+std::unique_ptr<Simulation> lattice_bed(int threads, std::unique_ptr<Module> module = nullptr) {
   omp_set_num_threads(threads);
   DemSetup s;
   s.gravity = {0, 0, -9.81};
@@ -36,9 +37,18 @@ std::unique_ptr<Simulation> lattice_bed(int threads) {
         add_sphere(*sim, {(i + 0.5) * a + rng.uniform(-1e-5, 1e-5), (j + 0.5) * a, (k + 0.5) * a},
                    r * rng.uniform(0.9, 1.0), {rng.uniform(-0.1, 0.1), rng.uniform(-0.1, 0.1), 0});
   sim->dt = 1e-5;
+  if (module) sim->modules.push_back(std::move(module));
   sim->setup();
   return sim;
 }
+
+// Asks for the contact stress (engine/contact_stress.hpp) and arms it every step.
+class ArmContactStress final : public Module {
+ public:
+  std::string name() const override { return "arm"; }
+  void declare_contact_state(ContactPipeline& p) override { p.require_contact_stress(); }
+  void pre_force(Simulation& sim) override { sim.contacts().stress()->arm(); }
+};
 
 }  // namespace
 
@@ -153,4 +163,43 @@ TEST(Parallel, BreakageRepeatsBitForBitOnTwoThreads) {
   EXPECT_GT(first.first, 100u);
   EXPECT_EQ(first.first, second.first);
   EXPECT_EQ(first.second, second.second);
+}
+
+// The per-particle Love–Weber moments and load-bearing counts of the contact stress on two
+// threads (a thread writes its own particles and queues shares for the other thread's, merged in
+// thread order) against one thread, one step from the same checkpointed state of a settling bed
+// (so from the same positions): counts exact; each moment component sums a particle's few
+// contacts in another order, so it differs by rounding only: 1e-12 of the bed's largest moment
+// component.
+TEST(Parallel, ContactStressOnTwoThreadsAgreesWithOne) {
+  auto settled = lattice_bed(1, std::make_unique<ArmContactStress>());
+  settled->run(300);
+  Archive ar;
+  settled->save(ar);
+  auto a = lattice_bed(1, std::make_unique<ArmContactStress>());
+  a->load(ar);
+  a->step();
+  auto b = lattice_bed(2, std::make_unique<ArmContactStress>());
+  b->load(ar);
+  b->step();
+  omp_set_num_threads(omp_get_num_procs());
+  const ContactStress& sa = *a->contacts().stress();
+  const ContactStress& sb = *b->contacts().stress();
+  const std::size_t n = a->particles.size();
+  ASSERT_GT(n, 4096u);
+  double largest = 0;
+  std::size_t bearing = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (double m : sa.moment[i]) largest = std::max(largest, std::abs(m));
+    bearing += sa.load_bearing[i];
+  }
+  ASSERT_GT(largest, 0.0);
+  ASSERT_GT(bearing, 300u);  // the contact loop is exercised
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = slot_of(*b, a->particles.id[i]);
+    ASSERT_EQ(sa.load_bearing[i], sb.load_bearing[j]) << "particle " << a->particles.id[i];
+    for (std::size_t k = 0; k < 6; ++k)
+      ASSERT_NEAR(sa.moment[i][k], sb.moment[j][k], 1e-12 * largest)
+          << "particle " << a->particles.id[i] << " component " << k;
+  }
 }

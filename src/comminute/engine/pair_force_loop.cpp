@@ -35,7 +35,7 @@ std::vector<std::size_t> balanced_split(std::size_t n, int nt, Weight weight) {
 
 void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const NeighborList& pairs,
                         const ContactPipeline& pipeline, ContactStateStore& state, double dt,
-                        EnergyLedger& ledger, double& elastic) {
+                        EnergyLedger& ledger, double& elastic, std::vector<EndedContact>& ended) {
   const std::size_t n = p.size();
   const std::size_t npairs = pairs.size();
   const int nt = npairs >= 2 * kParallelMin ? max_threads() : 1;
@@ -49,6 +49,8 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
   for (int t = 1; t < nt; ++t)
     owner_begin[t] = split[t] < npairs ? pairs.first[split[t]] : static_cast<std::uint32_t>(n);
   cross_.resize(static_cast<std::size_t>(nt));
+  ended_.resize(static_cast<std::size_t>(nt));
+  const CollisionRecord* record = pipeline.collisions();
   std::vector<EnergyTally> tally(static_cast<std::size_t>(nt));
   const Slots& slots = state.slots();
   std::uint8_t* active = state.active.data();
@@ -64,6 +66,8 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
     const std::uint32_t own0 = owner_begin[t], own1 = owner_begin[t + 1];
     auto& queued = cross_[t];
     queued.clear();
+    auto& separated = ended_[t];
+    separated.clear();
     EnergyTally tl;  // local: threads' tallies side by side in memory would share a cache line
     const std::size_t k0 = rows[own0], k1 = rows[own1];
     // the touching pairs are gathered into runs of up to kRun contacts, evaluated in one call
@@ -101,7 +105,10 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
       const double rsum = R[i] + R[j];
       const double dist2 = norm2(d);
       if (dist2 >= rsum * rsum) {
-        if (active[k]) state.clear(k);  // the bodies separated: the contact's state is gone
+        if (active[k]) {  // the bodies separated: the contact's state is gone
+          if (record) separated.push_back({i, j, false, record->totals(state.at(k))});
+          state.clear(k);
+        }
         continue;
       }
       active[k] = 1;
@@ -135,6 +142,7 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
       p.t[c.particle] += c.torque;
     }
   for (const auto& tl : tally) tl.book(ledger, elastic);
+  for (const auto& list : ended_) ended.insert(ended.end(), list.begin(), list.end());
 }
 
 }  // namespace comminute

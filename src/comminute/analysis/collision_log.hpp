@@ -39,6 +39,7 @@ struct CollisionLogSettings {
   double energy_max = 1e3;                               // J, last bin edge
   int bins = 120;                                        // log-spaced bins between them
   SpectrumEnergy spectrum = SpectrumEnergy::impact_reduced_mass;
+  double interval = 0;                 // s between rewrites of the tables (0: every 5000 steps)
   std::vector<std::string> materials;  // names, by index
   std::vector<std::string> walls;      // names, by index
 };
@@ -68,6 +69,7 @@ class CollisionLogModule final : public Module, public SeriesSource {
   void save(Archive& a) const override;
   void load(const Archive& a) override;
   SeriesSource* series_source() override { return this; }
+  Cadence output_cadence() const override { return Cadence::interval_or_steps(s_.interval, 5000); }
   void sample(const Simulation& sim) override;
   std::vector<Table> tables(const Simulation& sim) const override;
 

@@ -39,6 +39,7 @@ void add_collision_log(const CaseTable& root, Simulation& sim) {
   s.energy_max = t->number("energy_max", Limits::positive(), 1e3);
   if (!(s.energy_max > s.energy_min)) t->fail("energy_max", "must be larger than energy_min");
   s.bins = static_cast<int>(t->integer("bins", 1, 10000, 120));
+  s.interval = t->number("interval", Limits::non_negative(), 0.0);
   const std::string e =
       t->choice("energy", {"impact_reduced_mass", "impact_average_mass", "dissipated"},
                 "impact_reduced_mass");

@@ -12,6 +12,7 @@
 #include "comminute/analysis/collision_log.hpp"
 #include "comminute/engine/parallel_threshold.hpp"
 #include "comminute/geometry/plane_wall.hpp"
+#include "comminute/pbm/capece_rate.hpp"
 #include "comminute/pbm/collision_spectrum.hpp"
 #include "dem_fixture.hpp"
 
@@ -30,8 +31,8 @@ CollisionLogSettings log_settings(std::vector<std::string> walls) {
   s.materials = {"m"};
   s.walls = std::move(walls);
   s.energy_min = 1e-9;
-  s.energy_max = 1e-1;
-  s.bins = 80;  // 10 per decade
+  s.energy_max = 10;  // J, and J/kg for the specific impact energies (up to 1.5 J/kg here)
+  s.bins = 100;       // 10 per decade
   return s;
 }
 
@@ -115,13 +116,13 @@ TEST(CollisionLog, SpectrumOfKnownImpactsEqualsItsAnalyticCumulativeDistribution
   EXPECT_DOUBLE_EQ(window, sim->time);
   const auto dir = std::filesystem::temp_directory_path() / "comminute_collision_spectrum";
   std::filesystem::create_directories(dir);
-  bool written = false;
+  int written = 0;
   for (const Table& t : log.tables(*sim))
-    if (t.name() == "collision_spectrum_all") {
+    if (t.name() == "collision_spectrum_all" || t.name() == "collision_specific_energy_all") {
       t.write(dir);
-      written = true;
+      ++written;
     }
-  ASSERT_TRUE(written);
+  ASSERT_EQ(written, 2);
   const CaseFile pbm = CaseFile::parse("spectrum_file = \"" +
                                        (dir / "collision_spectrum_all.csv").string() + "\"\n");
   const pbm::CollisionSpectrum spec = pbm::read_collision_spectrum(pbm.root(), "spectrum_file");
@@ -138,6 +139,14 @@ TEST(CollisionLog, SpectrumOfKnownImpactsEqualsItsAnalyticCumulativeDistribution
   // second (bin energies are the means of their events); up to the CSV's exact round trip
   EXPECT_NEAR(rate, n / window, 1e-12 * n / window);
   EXPECT_NEAR(power, mean * n / window, 1e-6 * mean * n / window);
+  // the mass-specific impact energies 1/2 v^2 = E / m*, read back by the `capece` rate's reader
+  // (which checks that the probabilities sum to 1); their mean is the mean impact energy over m*
+  const CaseFile capece = CaseFile::parse(
+      "specific_energy_file = \"" + (dir / "collision_specific_energy_all.csv").string() + "\"\n");
+  const auto em = pbm::read_specific_energy_distribution(capece.root(), "specific_energy_file");
+  double mean_em = 0;
+  for (std::size_t k = 0; k < em.energy.size(); ++k) mean_em += em.probability[k] * em.energy[k];
+  EXPECT_NEAR(mean_em, mean / mstar, 1e-6 * mean / mstar);  // single-precision speed
   std::filesystem::remove_all(dir);
 }
 

@@ -60,7 +60,8 @@ for run in a b; do
   "$bin" run "$run.toml" --threads 1 2> "$run.log" || { cat "$run.log"; exit 1; }
 done
 for f in a/collisions.csv a/collision_distributions.csv a/collision_spectrum_all.csv \
-         a/collision_spectrum_ball-ball.csv a/collision_spectrum_ball-wall_shell.csv; do
+         a/collision_spectrum_ball-ball.csv a/collision_spectrum_ball-wall_shell.csv \
+         a/collision_specific_energy_all.csv; do
   test -s "$f" || { echo "missing $f"; ls a; exit 1; }
   cmp "$f" "b/${f#a/}" || { echo "not deterministic: $f"; exit 1; }
 done

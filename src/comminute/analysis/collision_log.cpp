@@ -105,9 +105,13 @@ void CollisionLogModule::post_force(Simulation& sim) {
     e.duration = r.duration;
     e.max_overlap = r.max_overlap;
     e.max_normal_force = r.max_normal_force;
-    const std::array<double, n_quantities> q{e.impact_reduced, e.impact_average,
-                                             e.dissipated_normal, e.dissipated_tangential,
-                                             e.dissipated_normal + e.dissipated_tangential};
+    // the mass-specific impact energy E / m* = 1/2 v_n^2 (J/kg), Capece's E_m
+    const std::array<double, n_quantities> q{e.impact_reduced,
+                                             e.impact_average,
+                                             e.dissipated_normal,
+                                             e.dissipated_tangential,
+                                             e.dissipated_normal + e.dissipated_tangential,
+                                             0.5 * v2};
     add(type, e, q);
     add(names_.size() - 1, e, q);
   }
@@ -124,6 +128,23 @@ void CollisionLogModule::end_of_step(Simulation& sim) {
 
 void CollisionLogModule::sample(const Simulation& sim) {
   last_time_ = sim.time;
+}
+
+double CollisionLogModule::impacts_per_particle(std::size_t type, double frequency,
+                                                const Simulation& sim) const {
+  const double n = static_cast<double>(sim.particles.owned());
+  if (n == 0) return 0;
+  const std::size_t nm = s_.materials.size();
+  if (type + 1 == names_.size()) {  // all: the sum over the types
+    double f = 0;
+    const double window = window_length(sim.time);
+    for (std::size_t k = 0; k + 1 < names_.size(); ++k)
+      f += impacts_per_particle(k, window > 0 ? sums_[k].events / window : 0.0, sim);
+    return f;
+  }
+  // each particle of a pair has an impact, a particle on a wall one
+  const bool wall = type >= nm * (nm + 1) / 2;
+  return (wall ? 1.0 : 2.0) * frequency / n;
 }
 
 std::vector<Table> CollisionLogModule::tables(const Simulation& sim) const {
@@ -146,7 +167,8 @@ std::vector<Table> CollisionLogModule::tables(const Simulation& sim) const {
                                {"mean_diameter_1", "m"},
                                {"mean_diameter_2", "m"},
                                {"events_below_energy_min", "-"},
-                               {"events_above_energy_max", "-"}});
+                               {"events_above_energy_max", "-"},
+                               {"impacts_per_particle", "1/s"}});
   Table cumulative("collision_distributions", {{"contact_type", "-"},
                                                {"quantity", "-"},
                                                {"energy", "J"},
@@ -159,14 +181,14 @@ std::vector<Table> CollisionLogModule::tables(const Simulation& sim) const {
     if (t.events_total == 0 && k + 1 < names_.size()) continue;
     const double n = t.events, mean = n > 0 ? 1.0 / n : 0.0;
     const EnergyHistogram& hs = histogram(k, spectrum_q);
-    summary.add_row({names_[k], static_cast<std::uint64_t>(t.events_total),
-                     static_cast<std::uint64_t>(n), window_open() ? window_start_ : 0.0, window,
-                     n * per_s, t.impact_reduced * mean, t.impact_average * mean,
-                     t.dissipated_normal * mean, t.dissipated_tangential * mean,
-                     (t.dissipated_normal + t.dissipated_tangential) * per_s, t.duration * mean,
-                     t.max_overlap * mean, t.max_normal_force * mean, t.diameter_1 * mean,
-                     t.diameter_2 * mean, hs.below(), hs.above()});
-    for (int q = 0; q < n_quantities; ++q) {
+    summary.add_row(
+        {names_[k], static_cast<std::uint64_t>(t.events_total), static_cast<std::uint64_t>(n),
+         window_open() ? window_start_ : 0.0, window, n * per_s, t.impact_reduced * mean,
+         t.impact_average * mean, t.dissipated_normal * mean, t.dissipated_tangential * mean,
+         (t.dissipated_normal + t.dissipated_tangential) * per_s, t.duration * mean,
+         t.max_overlap * mean, t.max_normal_force * mean, t.diameter_1 * mean, t.diameter_2 * mean,
+         hs.below(), hs.above(), impacts_per_particle(k, n * per_s, sim)});
+    for (int q = 0; q < n_quantities - 1; ++q) {  // energies in J (not the specific one)
       const EnergyHistogram& h = histogram(k, q);
       for (int b = 0; b <= h.bins(); ++b) {
         const double f = h.cumulative(b);
@@ -179,6 +201,16 @@ std::vector<Table> CollisionLogModule::tables(const Simulation& sim) const {
     for (int b = 0; b < hs.bins(); ++b)
       spectrum.add_row({hs.bin_energy(b), static_cast<double>(hs.count(b)) * per_s});
     out.push_back(std::move(spectrum));
+    Table specific("collision_specific_energy_" + names_[k],
+                   {{"specific_energy_J_per_kg", "", true}, {"probability", "", true}});
+    const EnergyHistogram& hm = histogram(k, n_quantities - 1);
+    std::uint64_t binned = 0;
+    for (int b = 0; b < hm.bins(); ++b) binned += hm.count(b);
+    for (int b = 0; b < hm.bins(); ++b)
+      specific.add_row(
+          {hm.bin_energy(b),
+           binned > 0 ? static_cast<double>(hm.count(b)) / static_cast<double>(binned) : 0.0});
+    out.push_back(std::move(specific));
   }
   out.insert(out.begin(), std::move(cumulative));
   out.insert(out.begin(), std::move(summary));

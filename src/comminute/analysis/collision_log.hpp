@@ -8,7 +8,9 @@
 // steady state detected in the power and kinetic-energy series, steady_state.hpp).
 // Tables (docs/outputs.md): collisions.csv (per type), collision_distributions.csv (cumulative
 // distributions), collision_spectrum_<type>.csv (energy_J, frequency_per_s: the collision
-// spectrum `comminute pbm` reads, pbm/collision_spectrum.hpp).
+// spectrum `comminute pbm` reads, pbm/collision_spectrum.hpp) and
+// collision_specific_energy_<type>.csv (specific_energy_J_per_kg, probability: the mass-specific
+// impact energy distribution of the `capece` rate, pbm/capece_rate.hpp).
 // Checkpointed under collisions/: open events are in the contact store, everything else here.
 #include <array>
 #include <cstdint>
@@ -57,7 +59,9 @@ struct CollisionSums {
 class CollisionLogModule final : public Module, public SeriesSource {
  public:
   // The quantities binned per type, in this order.
-  static constexpr int n_quantities = 5;
+  // The last, impact_specific_energy = 1/2 v_n^2 (J/kg), is binned on the same edges (read in
+  // J/kg) and written only as the Capece specific-energy file.
+  static constexpr int n_quantities = 6;
   static const std::array<const char*, n_quantities> quantity_names;
 
   explicit CollisionLogModule(CollisionLogSettings s);
@@ -90,6 +94,9 @@ class CollisionLogModule final : public Module, public SeriesSource {
   std::size_t pair_type(std::size_t a, std::size_t b) const;
   std::size_t wall_type(std::size_t wall, std::size_t material) const;
   void add(std::size_t type, const CollisionSums& e, const std::array<double, n_quantities>& q);
+  // Impacts per particle per second of a type of `frequency` (1/s): each particle of a pair has
+  // an impact, a particle on a wall one; over every particle present.
+  double impacts_per_particle(std::size_t type, double frequency, const Simulation& sim) const;
 
   CollisionLogSettings s_;
   std::vector<std::string> names_;

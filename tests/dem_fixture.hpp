@@ -17,6 +17,7 @@ struct DemSetup {
   double youngs = 1e7, poisson = 0.3, density = 2500;
   std::string rolling;  // "" = none
   Vec3 gravity{0, 0, 0};
+  std::string contact_keys;  // more lines of the [contact] table (TOML)
 };
 
 inline std::unique_ptr<Simulation> make_simulation(const DemSetup& s) {
@@ -30,8 +31,8 @@ inline std::unique_ptr<Simulation> make_simulation(const DemSetup& s) {
   pi.cohesion_energy_density = s.cohesion;
   sim->materials.set_pair(0, 0, pi);
   // the [contact] table the models read their keys from
-  const CaseFile contact =
-      CaseFile::parse("normal_stiffness = " + std::to_string(s.linear_stiffness) + "\n");
+  const CaseFile contact = CaseFile::parse(
+      "normal_stiffness = " + std::to_string(s.linear_stiffness) + "\n" + s.contact_keys);
   sim->law = ContactLawRegistry::create(s.law, contact.root());
   if (!s.rolling.empty())
     sim->rolling = RollingResistanceRegistry::create(s.rolling, contact.root());

@@ -2,6 +2,7 @@
 // Triangle meshes for the mesh-wall tests: a tiled square, a closed box, and STL writers.
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <string>
 
 #include "comminute/geometry/mesh_wall.hpp"
@@ -22,6 +23,17 @@ inline IndexedMesh tiled_square(int n, double h, double x0 = 0, double y0 = 0, d
       m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
     }
   return m;
+}
+
+// Every edge used by exactly two triangles, once in each direction: closed and consistently
+// oriented (a 2-manifold surface).
+inline bool closed(const IndexedMesh& m) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
+  for (const auto& t : m.triangles)
+    for (int k = 0; k < 3; ++k) ++edges[{t[static_cast<std::size_t>(k)], t[(k + 1) % 3]}];
+  for (const auto& [e, n] : edges)
+    if (n != 1 || edges.count({e.second, e.first}) != 1) return false;
+  return true;
 }
 
 inline std::unique_ptr<MeshWall> mesh_wall(const IndexedMesh& m,

@@ -10,6 +10,7 @@
 #include "comminute/core/case_table.hpp"
 #include "comminute/geometry/ball_mill.hpp"
 #include "comminute/geometry/mesh_wall.hpp"
+#include "mesh_fixture.hpp"
 #include "temp_dir.hpp"
 
 using namespace comminute;
@@ -26,17 +27,6 @@ BallMillGeometry bond_mill() {
   g.lifter_width = 0.025;
   g.lifter_face_angle = 15 * std::numbers::pi / 180;
   return g;
-}
-
-// Every edge used by exactly two triangles, once in each direction: closed and consistently
-// oriented (a 2-manifold surface).
-bool closed(const IndexedMesh& m) {
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
-  for (const auto& t : m.triangles)
-    for (int k = 0; k < 3; ++k) ++edges[{t[static_cast<std::size_t>(k)], t[(k + 1) % 3]}];
-  for (const auto& [e, n] : edges)
-    if (n != 1 || edges.count({e.second, e.first}) != 1) return false;
-  return true;
 }
 
 }  // namespace

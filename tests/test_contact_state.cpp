@@ -105,7 +105,8 @@ class AsksForState final : public Module {
 }  // namespace
 
 TEST(ContactState, BytesPerContactFollowTheSubModels) {
-  // Hertz–Mindlin keeps its tangential spring (24 B) and the active flag (1 B); EPSD rolling adds
+  // Hertz–Mindlin keeps its tangential spring (24 B), the stiffness of the last step (8 B, for
+  // the rescaling on unloading) and the active flag (1 B); EPSD rolling adds
   // its spring (24 B); breakage's loading record three floats (12 B); a module's own Vec3 slot
   // 24 B. The history struct these replace held a fixed 64 B + 1 B flag in every contact.
   const CaseFile none = CaseFile::parse("");
@@ -115,19 +116,19 @@ TEST(ContactState, BytesPerContactFollowTheSubModels) {
   breakage.push_back(std::make_unique<AsksForState>(false));
   bonds.push_back(std::make_unique<AsksForState>(true));
   ContactPipeline plain;
-  EXPECT_EQ(plain.assemble(*law, nullptr, nullptr, no_modules).bytes_per_contact(), 25u);
+  EXPECT_EQ(plain.assemble(*law, nullptr, nullptr, no_modules).bytes_per_contact(), 33u);
   EXPECT_EQ(plain.loading(), nullptr);
   ContactPipeline with_rolling;
   EXPECT_EQ(with_rolling.assemble(*law, rolling.get(), nullptr, no_modules).bytes_per_contact(),
-            49u);
+            57u);
   ContactPipeline with_breakage;
-  EXPECT_EQ(with_breakage.assemble(*law, nullptr, nullptr, breakage).bytes_per_contact(), 37u);
+  EXPECT_EQ(with_breakage.assemble(*law, nullptr, nullptr, breakage).bytes_per_contact(), 45u);
   EXPECT_NE(with_breakage.loading(), nullptr);
   EXPECT_EQ(with_breakage.layout().slot_names(),
             (std::vector<std::string>{"tangential_spring", "loading_max_overlap", "loading_work",
-                                      "loading_normal_force"}));
+                                      "loading_normal_force", "tangential_stiffness"}));
   ContactPipeline with_bonds;
-  EXPECT_EQ(with_bonds.assemble(*law, nullptr, nullptr, bonds).bytes_per_contact(), 61u);
+  EXPECT_EQ(with_bonds.assemble(*law, nullptr, nullptr, bonds).bytes_per_contact(), 69u);
   // slots are declared while the model is assembled, not after
   EXPECT_THROW(with_bonds.module_layout(), Error);
 }

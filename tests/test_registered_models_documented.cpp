@@ -12,6 +12,7 @@
 #include "comminute/contact/rolling_resistance.hpp"
 #include "comminute/geometry/motion_model.hpp"
 #include "comminute/geometry/wall.hpp"
+#include "comminute/geometry/wall_group.hpp"
 #include "comminute/particles/size_distribution.hpp"
 #include "source_file.hpp"
 
@@ -32,6 +33,7 @@ const Family kFamilies[] = {
     {"SizeDistributionRegistry", &SizeDistributionRegistry::names, "docs/case-file.md"},
     {"WallRegistry", &WallRegistry::names, "docs/case-file.md"},
     {"MotionRegistry", &MotionRegistry::names, "docs/case-file.md"},
+    {"WallGroupRegistry", &WallGroupRegistry::names, "docs/case-file.md"},
     {"BondLawRegistry", &bonds::BondLawRegistry::names, "docs/case-file.md"},
 };
 

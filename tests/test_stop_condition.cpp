@@ -2,8 +2,10 @@
 // reaches the condition's value, returns 0, and records when; `after` delays the check.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
+#include "comminute/core/units.hpp"
 #include "comminute/engine/stop_condition.hpp"
 #include "comminute/geometry/plane_wall.hpp"
 #include "comminute/run/run_loop.hpp"
@@ -29,6 +31,21 @@ std::unique_ptr<Simulation> pressed_sphere() {
   return sim;
 }
 
+// Runs `sim` with the one condition `c` on the piston until the condition ends the run (exit
+// status 0); returns the module.
+const StopConditionModule* run_to_stop(Simulation& sim, StopConditionSpec c) {
+  c.label = "stop[0]";
+  c.wall = 1;
+  auto m = std::make_unique<StopConditionModule>(std::vector<StopConditionSpec>{c});
+  const StopConditionModule* stop = m.get();
+  sim.modules.push_back(std::move(m));
+  sim.setup();
+  std::FILE* log = std::tmpfile();
+  EXPECT_EQ(run::run_until(sim, 1.0, nullptr, nullptr, nullptr, log), 0);
+  std::fclose(log);
+  return stop;
+}
+
 }  // namespace
 
 TEST(StopCondition, EndsTheRunAfterTheFirstStepThatReachesTheForce) {
@@ -45,16 +62,8 @@ TEST(StopCondition, EndsTheRunAfterTheFirstStepThatReachesTheForce) {
   ASSERT_GT(first, 100u);  // a real approach, not the first step
   auto sim = pressed_sphere();
   StopConditionSpec c;
-  c.label = "stop[0]";
-  c.wall = 1;
   c.value = limit;
-  auto m = std::make_unique<StopConditionModule>(std::vector<StopConditionSpec>{c});
-  const StopConditionModule* stop = m.get();
-  sim->modules.push_back(std::move(m));
-  sim->setup();
-  std::FILE* log = std::tmpfile();
-  EXPECT_EQ(run::run_until(*sim, 1.0, nullptr, nullptr, nullptr, log), 0);
-  std::fclose(log);
+  const StopConditionModule* stop = run_to_stop(*sim, c);
   EXPECT_EQ(sim->step_count, first);
   ASSERT_TRUE(stop->reached().has_value());
   EXPECT_EQ(stop->reached()->step, first);
@@ -80,4 +89,35 @@ TEST(StopCondition, BelowWithADelayAndAStressQuantity) {
   // the first step with t ≥ 1e-4 s: step 50 (to rounding of 50 additions of 2e-6)
   EXPECT_NEAR(static_cast<double>(sim->step_count), 50.0, 1.0);
   EXPECT_GE(sim->time, 1e-4);
+}
+
+TEST(StopCondition, ADirectionComparesTheCompressiveForceAlongIt) {
+  // The piston's force is along its normal; a direction at 60 degrees to the normal (into the
+  // particles, -z) sees half of it, −F·n = |F| cos 60°, so the condition on 2 N is reached at the
+  // first step with |F| >= 4 N (to the round-off of the cosine), later than |F| >= 2 N would be.
+  const double limit = 2.0;  // N
+  const Vec3 n{std::sin(units::pi / 3), 0, -std::cos(units::pi / 3)};
+  auto ref = pressed_sphere();
+  ref->setup();
+  std::uint64_t first = 0, magnitude_first = 0;
+  while (first == 0) {
+    ref->step();
+    if (magnitude_first == 0 && norm(ref->walls[1]->force) >= limit)
+      magnitude_first = ref->step_count;
+    if (-dot(ref->walls[1]->force, n) >= limit) first = ref->step_count;
+    ASSERT_LT(ref->step_count, 100000u);
+  }
+  ASSERT_GT(first, magnitude_first);
+  // the force on the piston is normal to it: half of it lies along n
+  EXPECT_NEAR(-dot(ref->walls[1]->force, n), 0.5 * norm(ref->walls[1]->force),
+              1e-12 * norm(ref->walls[1]->force));
+  auto sim = pressed_sphere();
+  StopConditionSpec c;
+  c.value = limit;
+  c.direction = n;
+  const StopConditionModule* stop = run_to_stop(*sim, c);
+  EXPECT_EQ(sim->step_count, first);
+  ASSERT_TRUE(stop->reached().has_value());
+  EXPECT_GE(stop->reached()->quantity, limit);
+  EXPECT_NE(stop->describe(*sim).find("wall 'piston' force along ["), std::string::npos);
 }

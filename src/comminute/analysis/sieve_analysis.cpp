@@ -27,7 +27,8 @@ std::vector<std::vector<double>> mass_passing(const ParticleStore& p,
   for (std::size_t i = 0; i < p.size(); ++i) {
     const auto c = static_cast<std::size_t>(std::lower_bound(asc.begin(), asc.end(), diameters[i]) -
                                             asc.begin());
-    in_class[p.material[i]][c] += p.mass[i];  // class c: passes asc[c] and all larger sieves
+    in_class[p.material[i]][c] +=
+        p.physical_mass(i);  // class c: passes asc[c] and all larger sieves
   }
   std::vector<std::vector<double>> out(materials, std::vector<double>(sieves.size(), 0.0));
   for (std::size_t m = 0; m < materials; ++m) {

@@ -43,7 +43,7 @@ void SizeDistributionObserver::sample(const Simulation& sim) {
   const std::size_t nm = sim.materials.size();
   const auto passing = mass_passing(p, final_diameters(p), sieves_, nm, breakage_->fines_mass());
   std::vector<double> total(nm, 0.0);
-  for (std::size_t i = 0; i < p.size(); ++i) total[p.material[i]] += p.mass[i];
+  for (std::size_t i = 0; i < p.size(); ++i) total[p.material[i]] += p.physical_mass(i);
   for (std::size_t m = 0; m < nm; ++m) {
     total[m] += m < breakage_->fines_mass().size() ? breakage_->fines_mass()[m] : 0.0;
     if (total[m] <= 0) continue;

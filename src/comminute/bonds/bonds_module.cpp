@@ -37,12 +37,21 @@ void BondsModule::create_bonds(Simulation& sim) {
            std::find(options_.materials.begin(), options_.materials.end(), p.material[i]) !=
                options_.materials.end();
   };
+  const std::vector<double>* grain = nullptr;
+  if (options_.within_grain) {
+    if (!p.has_field("grain"))
+      throw SimulationError(
+          "[bonds] within_grain = true needs particles with a grain field (an [[insert]] of "
+          "type \"clusters\")");
+    grain = &p.field(p.field_index("grain"));
+  }
   // candidates in id order, so that the bonds and their random strengths do not depend on slots
   std::vector<std::tuple<std::uint64_t, std::uint64_t, std::uint32_t, std::uint32_t>> found;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     std::uint32_t i = pairs.first[k], j = pairs.second[k];
     if (i >= p.owned() || j >= p.owned()) continue;  // a periodic image: not bonded
     if (!selected(i) || !selected(j)) continue;
+    if (grain && ((*grain)[i] < 0 || (*grain)[i] != (*grain)[j])) continue;
     const double gap = norm(p.x[j] - p.x[i]) - p.radius[i] - p.radius[j];
     if (gap > options_.gap_tolerance) continue;
     if (p.id[j] < p.id[i]) std::swap(i, j);

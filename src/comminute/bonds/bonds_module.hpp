@@ -21,6 +21,7 @@ struct BondOptions {
   double create_at = 0;                  // s
   double gap_tolerance = 0;              // m
   std::vector<std::uint16_t> materials;  // empty: all
+  bool within_grain = false;  // bond only pairs with the same per-particle field `grain` (≥ 0)
 };
 
 // One row of bonds.csv (plain data: checkpointed as is).

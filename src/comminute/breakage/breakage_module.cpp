@@ -34,6 +34,8 @@ void BreakageModule::register_fields(ParticleStore& p) {
   fields_.generation = p.add_field("breakage.generation", 0.0);
   fields_.parent_id = p.add_field("breakage.parent_id", 0.0);   // ids start at 1
   fields_.target = p.add_field("breakage.target_radius", 0.0);  // m, final radius while growing
+  if (opt_.time_step_floor > 0 && opt_.floor_rule == FloorRule::density_scaling)
+    fields_.mass_scale = p.add_field(ParticleStore::mass_scale_field, 1.0);
   events_.register_fields(p);
 }
 
@@ -75,6 +77,14 @@ void BreakageModule::post_force(Simulation& sim) {
                  [&](std::size_t i, const EventRecord& r) { replacement_.enqueue(p.id[i], r); });
 }
 
+double BreakageModule::rayleigh_floor(const Simulation& sim) const {
+  // No scaling when the step is fixed by the case ([simulation] time_step): it does not follow
+  // the particles, so nothing to protect.
+  if (!(opt_.time_step_floor > 0) || !sim.step_control) return 0;
+  const TimeStepControl& c = *sim.step_control;
+  return opt_.time_step_floor * c.ceiling() / c.fraction();
+}
+
 Replacement::Context BreakageModule::replacement_context(Simulation& sim) {
   return {materials_,
           fields_,
@@ -83,11 +93,14 @@ Replacement::Context BreakageModule::replacement_context(Simulation& sim) {
           ledger_,
           log_,
           growth_,
+          rayleigh_floor(sim),
+          opt_.floor_rule,
           [this, &sim](std::size_t s) {
             events_.clear(sim.particles, s);
             sim.particles.field(fields_.initialized)[s] = 0;
             initialize_particle(sim, s);
-          }};
+          },
+          mass_rule_};
 }
 
 void BreakageModule::end_of_step(Simulation& sim) {

@@ -65,6 +65,8 @@ class BreakageModule final : public Module {
   // Elastic energy created by the starting overlaps and the growth of fragments (J); it is
   // counted in removed_energy() with a negative sign.
   double created_energy() const { return ledger_.created(); }
+  // A rule that redistributes fragment masses (the texture module's), or null; not owned.
+  void set_fragment_mass_rule(FragmentMassRule* rule) { mass_rule_ = rule; }
   const MaterialBreakage* material(std::size_t k) const {
     return k < materials_.size() && materials_[k] ? &*materials_[k] : nullptr;
   }
@@ -76,6 +78,8 @@ class BreakageModule final : public Module {
 
   BreakageMaterials materials_;
   BreakageOptions opt_;
+  // s: the Rayleigh time below which fragments are density scaled (0: no scaling)
+  double rayleigh_floor(const Simulation& sim) const;
   BreakageFields fields_;
   Rng strength_rng_, placement_rng_;
   StressingEvents events_;
@@ -84,6 +88,7 @@ class BreakageModule final : public Module {
   BreakageLedger ledger_;
   EventLog log_;
   BreakageSeries series_{*this, opt_.output_interval};
+  FragmentMassRule* mass_rule_ = nullptr;
 };
 
 }  // namespace comminute::breakage

@@ -28,6 +28,12 @@ enum class SizingEnergy {
   at_fracture  // the energy absorbed up to the instant of fracture (the rule before issue 8)
 };
 
+// How fragments are kept from taking the step below the floor (docs/breakage.md, time_step_floor).
+enum class FloorRule {
+  fines,           // fragments whose Rayleigh time is below the floor's become fines
+  density_scaling  // they stay, with their inertia scaled up to the floor's Rayleigh time
+};
+
 // Breakage settings of one material.
 struct MaterialBreakage {
   std::unique_ptr<BreakageCriterion> criterion;
@@ -58,6 +64,10 @@ struct BreakageOptions {
   // Only particles of a generation below this break (1: only the initial set); default unlimited.
   std::uint32_t max_generations = std::numeric_limits<std::uint32_t>::max();
   double output_interval = 0;  // s between ledger rows / table rewrites (0: every 1000 steps)
+  // The step never falls below this fraction of the step of the inserted sizes (docs/models.md,
+  // "Time step"); 0: off, the step follows the smallest fragment.
+  double time_step_floor = 0.1;
+  FloorRule floor_rule = FloorRule::fines;
 };
 
 // Indices of the per-particle fields every collaborator reads.
@@ -66,6 +76,7 @@ struct BreakageFields {
   std::size_t generation = 0;   // 0 for particles of the initial set
   std::size_t parent_id = 0;    // id of the particle a fragment came from (0: initial set)
   std::size_t target = 0;       // m, final radius while growing (0 otherwise)
+  std::size_t mass_scale = 0;   // density scaling s >= 1 (registered when time_step_floor > 0)
 };
 
 }  // namespace comminute::breakage

@@ -7,8 +7,31 @@
 #include "comminute/breakage/contact_at_rest.hpp"
 #include "comminute/breakage/fragment_growth.hpp"
 #include "comminute/core/units.hpp"
+#include "comminute/fracture/rayleigh_time.hpp"
 
 namespace comminute::breakage {
+
+namespace {
+// Density scaling: s = (t_floor / t_R(d))^2 when the fragment's Rayleigh time t_R is below the
+// floor, else 1, so that its t_R with density s rho equals the floor (t_R ~ sqrt(rho);
+// docs/models.md "Time step").
+double mass_scale(const Simulation& sim, const Replacement::Context& ctx, double d,
+                  std::uint16_t material) {
+  if (!(ctx.rayleigh_floor > 0) || ctx.floor_rule != FloorRule::density_scaling) return 1.0;
+  const Material& m = sim.materials.material(material);
+  const double t = fracture::rayleigh_time(d, m.density, m.shear_modulus(), m.poisson_ratio);
+  return t < ctx.rayleigh_floor ? (ctx.rayleigh_floor / t) * (ctx.rayleigh_floor / t) : 1.0;
+}
+
+// The smallest fragment the floor lets a material keep (FloorRule::fines): t_R is proportional to
+// the diameter (docs/models.md eq. R1), so d_f = t_floor / t_R(1 m). 0 when there is no floor.
+double floor_size(const Simulation& sim, const Replacement::Context& ctx, std::uint16_t material) {
+  if (!(ctx.rayleigh_floor > 0) || ctx.floor_rule != FloorRule::fines) return 0.0;
+  const Material& m = sim.materials.material(material);
+  return ctx.rayleigh_floor /
+         fracture::rayleigh_time(1.0, m.density, m.shear_modulus(), m.poisson_ratio);
+}
+}  // namespace
 
 void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
   const bool due = interval_ <= 1 || sim.step_count % static_cast<std::uint64_t>(interval_) == 0;
@@ -90,7 +113,8 @@ void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t paren
   const double r_parent = std::max(p.radius[parent], p.field(ctx.fields.target)[parent]);
   if (p.flags[parent] & pflag::growing) ctx.growth.dropped();
   const double d = 2 * r_parent;
-  const double mass = p.mass[parent];
+  const double mass = p.physical_mass(parent);  // kg; p.mass is the inertial mass (x mass scale)
+  const double inertial_mass = p.mass[parent];
   const double density = mass / units::sphere_volume(r_parent);
   // Progeny sizes (docs/models.md eq. P1-P4).
   // E50b: the median fracture energy of the particles that break at this stressing energy, or
@@ -102,14 +126,23 @@ void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t paren
   if (e50b <= 0) e50b = mat.reference_energy;
   rec.t10 = mat.progeny->t10(e, e50b);
   const ProgenyDistribution dist = mat.progeny->distribution(d, rec.t10);
-  const double min_size = std::max(mat.min_fragment_size, mat.min_fragment_ratio * d);
+  const double min_size = std::max({mat.min_fragment_size, mat.min_fragment_ratio * d,
+                                    floor_size(sim, ctx, p.material[parent])});
   const Progeny progeny = draw_progeny(dist, mass, density, min_size, mat.fines, ctx.strength_rng);
   // Placement inside the parent.
-  std::vector<double> radii, masses, inertia;
+  // Inertial masses: the physical ones times each fragment's density scale (1 unless its
+  // Rayleigh time is below the floor).
+  std::vector<double> radii, masses, inertia, scales;
   for (const auto& f : progeny.fragments) {
+    scales.push_back(mass_scale(sim, ctx, f.diameter, p.material[parent]));
     radii.push_back(0.5 * f.diameter);
     masses.push_back(f.mass);
-    inertia.push_back(0.4 * f.mass * 0.25 * f.diameter * f.diameter);
+  }
+  if (ctx.mass_rule) ctx.mass_rule->share(p, parent, radii, masses);
+  for (std::size_t k = 0; k < radii.size(); ++k) {
+    masses[k] *= scales[k];  // inertial
+    const double df = progeny.fragments[k].diameter;
+    inertia.push_back(0.4 * masses[k] * 0.25 * df * df);
   }
   WallOverlap walls = [&sim](const Vec3& x, double r) {
     double worst = -r;
@@ -125,12 +158,14 @@ void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t paren
   const auto placed = placement_->place(ps, radii, masses, neighbours, walls, ctx.placement_rng);
   std::vector<Vec3> xs;
   for (const auto& s : placed) xs.push_back(s.x);
-  const double released = mat.release_fraction * rec.specific_energy * mass;
+  const double released = mat.release_fraction * rec.specific_energy * inertial_mass;
   const auto vel = fragment_velocities(p.x[parent], p.v[parent], p.w[parent], p.inertia[parent], xs,
                                        masses, inertia, released);
   // Energy bookkeeping: kinetic energy of the parent out, of the fragments in; fines booked as
   // mass leave with their kinetic and gravitational potential energy.
-  double ke_out = 0.5 * mass * norm2(p.v[parent]) + 0.5 * p.inertia[parent] * norm2(p.w[parent]);
+  double ke_out =
+      0.5 * inertial_mass * norm2(p.v[parent]) + 0.5 * p.inertia[parent] * norm2(p.w[parent]);
+  const double parent_scale = p.mass_scale(parent);
   double ke_in = 0;
   const Vec3 xp = p.x[parent], vp = p.v[parent];
   const std::uint16_t material = p.material[parent];
@@ -152,18 +187,21 @@ void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t paren
     init.flags = f.fines ? pflag::unbreakable : 0;
     const bool growing = placed[k].r < radii[k];
     if (growing) init.flags |= pflag::growing;
-    const std::uint64_t id = p.add_with_mass(init, f.mass);
+    const std::uint64_t id = p.add_with_mass(init, masses[k]);
     fragments_added_.push_back({id, radii[k]});
-    ctx.log.add_fragment({sim.time, p.id[parent], id, f.diameter, f.mass, generation, f.fines});
+    ctx.log.add_fragment(
+        {sim.time, p.id[parent], id, f.diameter, masses[k] / scales[k], generation, f.fines});
     const std::size_t s = p.size() - 1;
     p.inertia[s] = inertia[k];  // of the full-size sphere from the start
     for (std::size_t q = 0; q < parent_fields.size(); ++q) p.field(q)[s] = parent_fields[q];
     p.field(ctx.fields.generation)[s] = generation;
     p.field(ctx.fields.parent_id)[s] = static_cast<double>(p.id[parent]);
     p.field(ctx.fields.target)[s] = growing ? radii[k] : 0.0;
+    if (ctx.rayleigh_floor > 0 && ctx.floor_rule == FloorRule::density_scaling)
+      p.field(ctx.fields.mass_scale)[s] = scales[k];
     ctx.born(s);  // every fragment draws its own strength for its size
     if (growing) ctx.growth.started();
-    ke_in += 0.5 * f.mass * norm2(vel.v[k]) + 0.5 * inertia[k] * norm2(vel.w[k]);
+    ke_in += 0.5 * masses[k] * norm2(vel.v[k]) + 0.5 * inertia[k] * norm2(vel.w[k]);
     if (f.fines)
       ++rec.fines_particles;
     else
@@ -205,7 +243,7 @@ void Replacement::replace(Simulation& sim, const Context& ctx, std::size_t paren
   fragment_slots_[p.id[parent]] = {first, p.size()};
   if (progeny.fines_mass > 0) {
     ctx.ledger.add_fines(material, progeny.fines_mass, vp);
-    const double pe = -progeny.fines_mass * dot(sim.gravity, xp);
+    const double pe = -parent_scale * progeny.fines_mass * dot(sim.gravity, xp);  // inertial
     ctx.ledger.remove(sim, pe);
   }
   rec.fines_mass = progeny.fines_mass;

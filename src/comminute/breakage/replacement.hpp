@@ -14,6 +14,7 @@
 
 #include "comminute/breakage/breakage_settings.hpp"
 #include "comminute/breakage/event_log.hpp"
+#include "comminute/breakage/fragment_mass_rule.hpp"
 #include "comminute/core/rng.hpp"
 #include "comminute/engine/simulation.hpp"
 
@@ -33,9 +34,15 @@ class Replacement {
     BreakageLedger& ledger;
     EventLog& log;
     FragmentGrowth& growth;
+    // s: fragments whose Rayleigh time t_R is shorter become fines (FloorRule::fines) or get
+    // mass scale (rayleigh_floor / t_R)^2 (FloorRule::density_scaling); 0: no floor
+    double rayleigh_floor;
+    FloorRule floor_rule;
     // A fragment took slot s (parent's fields copied, generation and target set): clear its
     // event and draw its strength.
     std::function<void(std::size_t s)> born;
+    // Redistributes the fragment masses before placement (fragment_mass_rule.hpp), or null.
+    FragmentMassRule* mass_rule = nullptr;
   };
 
   Replacement(std::shared_ptr<const FragmentPlacement> placement, int interval)

@@ -137,7 +137,7 @@ void StressingEvents::assess(Simulation& sim, const BreakageMaterials& materials
       r.material = p.material[i];
       r.generation = static_cast<std::uint32_t>(p.field(f.generation)[i]);
       r.diameter = d;
-      r.mass = p.mass[i];
+      r.mass = p.physical_mass(i);
       r.specific_energy = energy[i];
       r.stressing_energy = std::max(stressing[i], energy[i]);
       r.peak_force = force[i];

@@ -2,7 +2,10 @@
 // LIGGGHTS/EDEM formulation (docs/models.md "Contact laws"): F_n = (4/3) E* sqrt(R*) δ^1.5 (Hertz,
 // J. reine angew. Math. 1882), S_t = 8 G* a (Mindlin, J. Appl. Mech. 1949), dashpots
 // -2 sqrt(5/6) β sqrt(S m*) v (Tsuji, Tanaka & Ishida, Powder Technol. 1992).
-// Keys of [contact]: tangential_damping (bool, default true).
+// Keys of [contact]: tangential_damping (bool, default true), tangential ("mindlin_rescale_force",
+// the default: incremental force, rescaled on unloading, Thornton, Cummins & Cleary, Powder
+// Technol. 2013 eq. 18; "mindlin": the total form F_t = -8 G* a xi, LAMMPS `mindlin`, whose
+// energy ledger does not close while loaded contacts change their radius); docs/models.md T1.
 #include <cmath>
 
 #include "comminute/contact/tangential_friction.hpp"
@@ -13,9 +16,13 @@ namespace {
 class HertzMindlin final : public ContactLawOf<HertzMindlin> {
  public:
   explicit HertzMindlin(const CaseTable& t)
-      : tangential_damping_(t.boolean("tangential_damping", true)) {}
+      : tangential_damping_(t.boolean("tangential_damping", true)),
+        rescale_(t.choice("tangential", {"mindlin_rescale_force", "mindlin"},
+                          "mindlin_rescale_force") == "mindlin_rescale_force") {}
   std::string name() const override { return "hertz_mindlin"; }
-  void declare(ContactStateStore& layout) override { slots_.declare(layout, dynamic_friction_); }
+  void declare(ContactStateStore& layout) override {
+    slots_.declare(layout, dynamic_friction_, rescale_);
+  }
 
   void compute(const ContactKinematics& k, const PairParameters& p, const StateRef& s,
                ContactForces& out) const override {
@@ -37,6 +44,9 @@ class HertzMindlin final : public ContactLawOf<HertzMindlin> {
     const double gt = tangential_damping_
                           ? -2.0 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(st * k.effective_mass)
                           : 0.0;
+    if (rescale_)
+      out.friction_dissipation +=
+          follow_stiffness(s.vec3(slots_.spring), s.f64(slots_.stiffness), st);
     coulomb_tangential(k, st, gt, friction_limit(p, out.normal_force), s.vec3(slots_.spring),
                        slots_.flag(s), out);
   }
@@ -47,6 +57,7 @@ class HertzMindlin final : public ContactLawOf<HertzMindlin> {
 
  private:
   bool tangential_damping_;
+  bool rescale_;  // tangential = "mindlin_rescale_force"
   TangentialSlots slots_;
 };
 

@@ -16,18 +16,47 @@ namespace comminute {
 // The slot of the spring: the tangential displacement of i relative to j (m), which changes sign
 // when i and j swap.
 // The sliding flag (1 while the contact slides) is declared only when some pair of the run has
-// mu_d != mu_s (ContactLaw::use_dynamic_friction()).
+// mu_d != mu_s (ContactLaw::use_dynamic_friction()). The stiffness of the last step (N/m) is
+// declared only by a law whose tangential stiffness follows the contact (Mindlin's 8 G* a with
+// the rescaling of follow_stiffness()).
 struct TangentialSlots {
   SlotId spring = 0;
   SlotId sliding = ContactStateStore::none;
-  void declare(ContactStateStore& layout, bool dynamic_friction) {
+  SlotId stiffness = ContactStateStore::none;
+  void declare(ContactStateStore& layout, bool dynamic_friction, bool stiffness_history = false) {
     spring = layout.declare_vec3("tangential_spring", SwapRule::negate);
     if (dynamic_friction) sliding = layout.declare_f32("tangential_sliding", SwapRule::keep);
+    if (stiffness_history) stiffness = layout.declare_f64("tangential_stiffness", SwapRule::keep);
   }
   float* flag(const StateRef& s) const {
     return sliding == ContactStateStore::none ? nullptr : &s.f32(sliding);
   }
 };
+
+// Carries a loaded spring from the stiffness of the last step, `kt_before` (N/m; 0: a new
+// contact), to this step's `kt`, and returns the elastic energy the change releases (J, >= 0).
+// The tangential force is incremental in Mindlin's stiffness and scaled with the contact radius
+// on unloading (Thornton, Cummins & Cleary, Powder Technol. 233 (2013) 30, eq. 18 and the
+// unloading rule after it; LAMMPS `mindlin_rescale/force`): with F_s = -k_t xi,
+//   k_t grows (loading):    F_s kept,               xi <- xi k_t,before / k_t
+//   k_t shrinks (unloading): F_s <- F_s a / a_before, xi kept.
+// Either way the spring energy F_s^2 / (2 k_t) can only fall; the fall is booked as friction
+// (the micro-slip of Mindlin's annulus), so the ledger closes. The total form F_s = -k_t(a) xi
+// instead gains 1/2 xi^2 dk_t from nothing while the contact is loaded.
+inline double follow_stiffness(Vec3& xi, double& kt_before, double kt) {
+  double released = 0;
+  if (kt_before > 0.0) {
+    const double energy = 0.5 * kt_before * norm2(xi);
+    if (kt > kt_before) {
+      xi *= kt_before / kt;
+      released = energy * (1.0 - kt_before / kt);
+    } else {
+      released = energy * (1.0 - kt / kt_before);
+    }
+  }
+  kt_before = kt;
+  return released;
+}
 
 // The Coulomb limits of a contact (N): mu_s |F_n| to start sliding, mu_d |F_n| while sliding.
 struct FrictionLimit {

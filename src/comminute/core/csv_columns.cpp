@@ -79,6 +79,10 @@ CsvColumns CsvColumns::read(const std::filesystem::path& path, const std::string
   return c;
 }
 
+bool CsvColumns::has(const std::string& name) const {
+  return std::find(names_.begin(), names_.end(), name) != names_.end();
+}
+
 std::vector<double> CsvColumns::column(const std::string& name) const {
   const auto it = std::find(names_.begin(), names_.end(), name);
   if (it == names_.end())

@@ -14,6 +14,7 @@ class CsvColumns {
   static CsvColumns read(const std::filesystem::path& path, const std::string& key = "");
 
   std::vector<double> column(const std::string& name) const;  // throws when missing
+  bool has(const std::string& name) const;
   long line_of_row(std::size_t row) const { return lines_[row]; }
 
  private:

@@ -40,7 +40,8 @@ inline constexpr std::uint64_t placement = 3;
 inline constexpr std::uint64_t texture = 4;
 inline constexpr std::uint64_t calibration = 5;
 inline constexpr std::uint64_t pbm = 6;
-inline constexpr std::uint64_t bonds = 7;  // bond strength scatter
+inline constexpr std::uint64_t bonds = 7;     // bond strength scatter
+inline constexpr std::uint64_t clusters = 8;  // grain packings and placement (+ 16 per [[insert]])
 }  // namespace rng_stream
 
 }  // namespace comminute

@@ -13,6 +13,7 @@
 #include "comminute/contact/loading_record.hpp"
 #include "comminute/contact/rolling_resistance.hpp"
 #include "comminute/core/error.hpp"
+#include "comminute/engine/contact_stress.hpp"
 #include "comminute/engine/module.hpp"
 
 namespace comminute {
@@ -30,6 +31,7 @@ class ContactPipeline {
     layout_ = ContactStateStore{};
     loading_.reset();
     collisions_.reset();
+    stress_.reset();
     law.declare(layout_);
     if (rolling) rolling->declare(layout_);
     assembling_ = true;
@@ -50,6 +52,13 @@ class ContactPipeline {
       collisions_->declare(module_layout());
     }
   }
+  // For modules, during assemble(): per-particle contact stress and the contact list
+  // (contact_stress.hpp), filled by the force loops on the steps a module arms.
+  ContactStress& require_contact_stress() {
+    if (!assembling_) throw Error("contact stress is asked for while the contacts are assembled");
+    if (!stress_) stress_ = std::make_unique<ContactStress>();
+    return *stress_;
+  }
   ContactStateStore& module_layout() {
     if (!assembling_)
       throw Error("per-contact slots are declared while the contacts are assembled");
@@ -60,6 +69,9 @@ class ContactPipeline {
   // null unless a module asked for it
   const LoadingRecord* loading() const { return loading_.get(); }
   const CollisionRecord* collisions() const { return collisions_.get(); }
+  // null unless a module asked for it; the force loops and modules write it (not part of the
+  // contact model's constness)
+  ContactStress* stress() const { return stress_.get(); }
 
   void evaluate(const ContactKinematics& k, const PairParameters& p, const StateRef& s,
                 ContactForces& out) const {
@@ -95,6 +107,7 @@ class ContactPipeline {
 
   std::unique_ptr<LoadingRecord> loading_;
   std::unique_ptr<CollisionRecord> collisions_;
+  std::unique_ptr<ContactStress> stress_;
   bool assembling_ = false;
   ContactStateStore layout_;
 };

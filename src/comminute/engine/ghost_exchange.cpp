@@ -21,15 +21,19 @@ PeriodicMap::Shift GhostExchange::label_of(const ParticleStore& p, std::size_t i
   return c;
 }
 
-void GhostExchange::wrap(ParticleStore& p) const {
+void GhostExchange::wrap(ParticleStore& p) {
+  wrapped_.clear();
   for (std::size_t i = 0; i < p.owned(); ++i) {
     const PeriodicMap::Shift s = map.wrap_shift(p.x[i]);
     if (s == PeriodicMap::Shift{0, 0, 0}) continue;
+    wrapped_.push_back({p.id[i], s});
     p.x[i] = map.point(p.x[i], s);
     p.v[i] = map.vector(p.v[i], s);
     p.w[i] = map.vector(p.w[i], s);
     for (std::size_t a = 0; a < 3; ++a) p.field(f_label_[a])[i] -= s[a];
   }
+  std::sort(wrapped_.begin(), wrapped_.end(),
+            [](const Wrapped& a, const Wrapped& b) { return a.id < b.id; });
 }
 
 void GhostExchange::plan(const ParticleStore& p, double skin) {

@@ -32,7 +32,13 @@ class GhostExchange {
   // At a rebuild, with no ghosts in the store: wraps the owned particles into the domain (a
   // sector turns velocity and angular velocity with the position; momentum magnitude is kept),
   // then plans one ghost per (owned particle, image) within reach of a face.
-  void wrap(ParticleStore& p) const;
+  void wrap(ParticleStore& p);
+  // The particles the last wrap moved (by id) and the image each was moved by.
+  struct Wrapped {
+    std::uint64_t id;
+    PeriodicMap::Shift shift;
+  };
+  const std::vector<Wrapped>& wrapped() const { return wrapped_; }
   void plan(const ParticleStore& p, double skin);
   // Appends the planned ghosts from their owners' current state.
   void append(ParticleStore& p) const;
@@ -62,6 +68,7 @@ class GhostExchange {
   std::vector<std::uint8_t> image_;   // index into map.images()
   std::size_t f_label_[3] = {0, 0, 0};
   std::vector<std::uint64_t> labels_;  // scratch
+  std::vector<Wrapped> wrapped_;       // by the last wrap, sorted by id
   PeriodicMap::Shift label_of(const ParticleStore& p, std::size_t owned_slot) const;
 };
 

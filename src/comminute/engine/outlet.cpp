@@ -63,7 +63,7 @@ void OutletModule::end_of_step(Simulation& sim) {
       r.time = sim.time;
       r.step = sim.step_count;
       r.id = p.id[i];
-      r.mass = p.mass[i];
+      r.mass = p.physical_mass(i);
       r.diameter = 2 * std::max(p.radius[i], target ? (*target)[i] : 0.0);
       r.outlet = static_cast<std::uint32_t>(k);
       r.generation = generation ? static_cast<std::uint32_t>((*generation)[i]) : 0;

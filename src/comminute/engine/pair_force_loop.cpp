@@ -51,6 +51,11 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
   cross_.resize(static_cast<std::size_t>(nt));
   ended_.resize(static_cast<std::size_t>(nt));
   const CollisionRecord* record = pipeline.collisions();
+  ContactStress* cs = pipeline.stress();
+  const bool armed = cs && cs->armed();
+  const bool want_list = armed && cs->contact_list_wanted();
+  const double threshold = cs ? cs->threshold() : 0.0;
+  if (cs) stress_.resize(static_cast<std::size_t>(nt));
   std::vector<EnergyTally> tally(static_cast<std::size_t>(nt));
   const Slots& slots = state.slots();
   std::uint8_t* active = state.active.data();
@@ -68,6 +73,12 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
     queued.clear();
     auto& separated = ended_[t];
     separated.clear();
+    StressPart* sp = cs ? &stress_[t] : nullptr;
+    if (sp) {
+      sp->cross.clear();
+      sp->starts.clear();
+      sp->contacts.clear();
+    }
     EnergyTally tl;  // local: threads' tallies side by side in memory would share a cache line
     const std::size_t k0 = rows[own0], k1 = rows[own1];
     // the touching pairs are gathered into runs of up to kRun contacts, evaluated in one call
@@ -96,6 +107,22 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
         } else {
           queued.push_back({j, -fc, tj});
         }
+        if (armed) {  // Love–Weber: l_i = -ri n, l_j = +rj n, forces ±fc
+          const std::uint32_t lb = o.normal_force > threshold ? 1 : 0;
+          add_sym_outer(cs->moment[i], fc, nrm, -ri);
+          cs->load_bearing[i] += lb;
+          if (j >= own0 && j < own1) {
+            add_sym_outer(cs->moment[j], fc, nrm, -rj);
+            cs->load_bearing[j] += lb;
+          } else {
+            CrossMoment cm{j, lb, {}};
+            add_sym_outer(cm.moment, fc, nrm, -rj);
+            sp->cross.push_back(cm);
+          }
+          if (want_list)
+            sp->contacts.push_back(
+                {i, static_cast<std::int32_t>(j), X[i], X[j], fc, o.normal_force});
+        }
       }
       nrun = 0;
     };
@@ -111,6 +138,7 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
         }
         continue;
       }
+      if (sp && !active[k]) sp->starts.push_back({i, static_cast<std::int32_t>(j)});
       active[k] = 1;
       const double dist = std::sqrt(dist2);
       const Vec3 nrm = d / dist;
@@ -143,6 +171,15 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
     }
   for (const auto& tl : tally) tl.book(ledger, elastic);
   for (const auto& list : ended_) ended.insert(ended.end(), list.begin(), list.end());
+  if (cs)
+    for (const auto& part : stress_) {
+      for (const auto& c : part.cross) {
+        for (std::size_t a = 0; a < 6; ++a) cs->moment[c.particle][a] += c.moment[a];
+        cs->load_bearing[c.particle] += c.load_bearing;
+      }
+      cs->starts.insert(cs->starts.end(), part.starts.begin(), part.starts.end());
+      cs->contacts.insert(cs->contacts.end(), part.contacts.begin(), part.contacts.end());
+    }
 }
 
 }  // namespace comminute

@@ -22,7 +22,10 @@ class PairForceLoop {
   // Adds the contact forces and torques of every touching pair to p.f, p.t, updates `state`
   // (active flags, slots), books the step's dissipation in `ledger` and adds the elastic energy
   // held in the contacts to `elastic` (J), thread by thread in order. When the pipeline keeps
-  // the collision record, appends the pairs that separated to `ended`, in pair order.
+  // the collision record, appends the pairs that separated to `ended`, in pair order. When the
+  // pipeline carries a ContactStress, lists the contacts that began and, on armed steps, fills its
+  // moments, counts and contact list (the other particle's share queued like its force, lists in
+  // thread order).
   void run(ParticleStore& p, const MaterialTable& materials, const NeighborList& pairs,
            const ContactPipeline& pipeline, ContactStateStore& state, double dt,
            EnergyLedger& ledger, double& elastic, std::vector<EndedContact>& ended);
@@ -34,6 +37,17 @@ class PairForceLoop {
   };
   std::vector<std::vector<CrossForce>> cross_;    // per thread, reused
   std::vector<std::vector<EndedContact>> ended_;  // per thread, reused
+  struct CrossMoment {  // a pair's Love–Weber share for a particle owned by another thread
+    std::uint32_t particle;
+    std::uint32_t load_bearing;
+    SymTensor moment;
+  };
+  struct StressPart {  // per thread, reused
+    std::vector<CrossMoment> cross;
+    std::vector<ContactStart> starts;
+    std::vector<ContactRecord> contacts;
+  };
+  std::vector<StressPart> stress_;
 };
 
 }  // namespace comminute

@@ -67,6 +67,13 @@ class PairTracker {
   const NeighborList& pairs() const { return nlist_; }
   NeighborList& pairs() { return nlist_; }
   const std::vector<WallContactRecord>& wall_candidates() const { return wall_candidates_; }
+  // Before a rebuild: calls f(record, index) on each touching wall contact, which may change its
+  // feature key (periodic wraps); the rebuild then carries the contact under its new key.
+  template <class F>
+  void rekey_wall_contacts(const ContactStateStore& wall_state, F f) {
+    for (std::size_t q = 0; q < wall_candidates_.size(); ++q)
+      if (wall_state.active[q]) f(wall_candidates_[q], q);
+  }
   std::uint64_t rebuilds() const { return rebuilds_; }
 
   void save(Archive& a) const;

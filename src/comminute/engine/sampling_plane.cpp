@@ -45,10 +45,10 @@ void SamplingPlaneModule::end_of_step(Simulation& sim) {
       const double now = dot(p.x[i] - o, n) > 0 ? 1.0 : -1.0;
       if (side[i] == -1.0 && now == 1.0) {
         ++c.positive;
-        c.mass_positive += p.mass[i];
+        c.mass_positive += p.physical_mass(i);
       } else if (side[i] == 1.0 && now == -1.0) {
         ++c.negative;
-        c.mass_negative += p.mass[i];
+        c.mass_negative += p.physical_mass(i);
       }
       side[i] = now;
     }

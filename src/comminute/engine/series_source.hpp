@@ -8,6 +8,7 @@
 
 #include "comminute/core/cadence.hpp"
 #include "comminute/core/csv_table.hpp"
+#include "comminute/engine/dataset.hpp"
 
 namespace comminute {
 
@@ -22,6 +23,8 @@ class SeriesSource {
   virtual void sample(const Simulation& sim) = 0;
   // The module's tables as of now, every row since the start of the run.
   virtual std::vector<Table> tables(const Simulation& sim) const = 0;
+  // Spatial datasets (grids, force chains) written with the tables (VTK files), or none.
+  virtual std::vector<Dataset> datasets(const Simulation&) const { return {}; }
 };
 
 }  // namespace comminute

@@ -57,6 +57,7 @@ void Simulation::step() {
   for (auto& m : modules) m->pre_force(*this);
   compute_forces();
   for (auto& m : modules) m->post_force(*this);
+  if (ContactStress* cs = contacts_.stress()) cs->disarm();
   particles.drop_ghosts();
   const bool bad = VelocityVerlet::kick(particles, dt);
   ++step_count;
@@ -109,12 +110,29 @@ Vec3 Simulation::pair_frame(std::size_t from, std::size_t seen, const Vec3& x) c
   return ghosts_.to_owner_frame(from, n_owned_, ghosts_.from_owner_frame(seen, n_owned_, x));
 }
 
+void Simulation::rekey_wrapped_wall_contacts() {
+  // a touching wall contact of a wrapped particle is now seen from the particle's new copy: its
+  // spring turns with it (sector) and a wall standing for its images re-keys the feature
+  const auto& moved = ghosts_.wrapped();
+  if (moved.empty()) return;
+  tracker_.rekey_wall_contacts(wall_state_, [&](WallContactRecord& c, std::size_t q) {
+    const auto it = std::lower_bound(
+        moved.begin(), moved.end(), c.id,
+        [](const GhostExchange::Wrapped& w, std::uint64_t id) { return w.id < id; });
+    if (it == moved.end() || it->id != c.id) return;
+    c.feature = walls[c.wall]->feature_after_wrap(c.feature, it->shift);
+    if (ghosts_.map.is_sector())
+      wall_state_.map_vectors(q, [&](const Vec3& v) { return ghosts_.map.vector(v, it->shift); });
+  });
+}
+
 void Simulation::compute_forces() {
   const std::vector<std::uint64_t>* labels = nullptr;
   if (ghosts_.active()) {
     if (tracker_.due(particles, options)) {  // wrap and plan the ghosts anew (docs/models.md)
       tracker_.prepare(particles, options);
       ghosts_.wrap(particles);
+      rekey_wrapped_wall_contacts();
       ghosts_.plan(particles, options.skin);
     }
     ghosts_.append(particles);
@@ -132,11 +150,17 @@ void Simulation::compute_forces() {
   }
   elastic_energy_ = 0;
   ended_contacts_.clear();
+  ContactStress* stress = contacts_.stress();
+  if (stress) stress->begin(particles.size());
   pair_loop_.run(particles, materials, tracker_.pairs(), contacts_, pair_state_, dt, ledger,
                  elastic_energy_, ended_contacts_);
   wall_loop_.run(particles, materials, walls, tracker_.wall_candidates(), contacts_, wall_state_,
                  dt, ledger, elastic_energy_, wall_contacts_, ended_contacts_);
   if (ghosts_.active()) ghosts_.fold(particles);
+  if (stress && ghosts_.active())
+    stress->fold(particles.owned(), particles.ghost_owner, [this](std::size_t g, const Vec3& v) {
+      return ghosts_.map.inverse_vector(v, ghosts_.image(g));
+    });
 }
 
 Observables Simulation::observe() const {

@@ -123,6 +123,7 @@ class Simulation {
  private:
   void assemble_contacts();
   void compute_forces();
+  void rekey_wrapped_wall_contacts();
   [[noreturn]] void report_non_finite() const;
 
   ContactPipeline contacts_;

@@ -14,7 +14,8 @@ StopConditionModule::StopConditionModule(std::vector<StopConditionSpec> conditio
 
 double StopConditionModule::quantity(const Simulation& sim, std::size_t k) const {
   const StopConditionSpec& c = conditions_[k];
-  const double f = norm(sim.walls.at(c.wall)->force);
+  const Vec3& force = sim.walls.at(c.wall)->force;
+  const double f = norm2(c.direction) > 0 ? -dot(force, c.direction) : norm(force);
   return c.area > 0 ? f / c.area : f;
 }
 
@@ -35,8 +36,11 @@ std::string StopConditionModule::describe(const Simulation& sim) const {
   if (!reached_) return {};
   const StopConditionSpec& c = conditions_.at(reached_->condition);
   const char* unit = c.area > 0 ? "Pa" : "N";
-  return fmt::format("{}: wall '{}' {} = {:.6g} {} {} {:.6g} {} at t = {:.9g} s (step {})", c.label,
-                     sim.walls.at(c.wall)->name, c.area > 0 ? "stress" : "force",
+  const Vec3& n = c.direction;
+  const std::string along =
+      norm2(n) > 0 ? fmt::format(" along [{:.6g}, {:.6g}, {:.6g}]", n.x, n.y, n.z) : "";
+  return fmt::format("{}: wall '{}' {}{} = {:.6g} {} {} {:.6g} {} at t = {:.9g} s (step {})",
+                     c.label, sim.walls.at(c.wall)->name, c.area > 0 ? "stress" : "force", along,
                      reached_->quantity, unit, c.above ? ">=" : "<=", c.value, unit, reached_->time,
                      reached_->step);
 }

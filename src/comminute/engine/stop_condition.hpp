@@ -2,7 +2,9 @@
 // Stop conditions ([[stop]]): end a run before its end time when a wall's force or stress reaches
 // a value — a compression test to a target stress, a safety limit on a roll force. After every
 // step (observation stage) each condition compares the magnitude of the force the particles
-// exert on its wall, |F| (N), or |F| / area (Pa), with its value: `above` is reached when the
+// exert on its wall, |F| (N), or |F| / area (Pa) — or, when the condition has a direction n (unit,
+// from the wall into the particles), the compressive force along it, −F·n, the quantity a
+// controlled wall's servo holds (wall_control.hpp) — with its value: `above` is reached when the
 // quantity is ≥ the value, `below` when ≤; conditions are checked from time `after` on. The first
 // condition reached is recorded (time, step, value) and the run loop (run/run_loop.hpp) then
 // finishes the outputs and ends the run: `comminute run` exits with status 0, as at the end time,
@@ -12,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "comminute/core/vec3.hpp"
 #include "comminute/engine/module.hpp"
 #include "comminute/engine/series_source.hpp"
 
@@ -20,7 +23,8 @@ namespace comminute {
 struct StopConditionSpec {
   std::string label;     // "stop[0]", in messages
   std::size_t wall = 0;  // index in Simulation::walls
-  double area = 0;       // m², > 0: the quantity is a stress |F| / area (Pa), else |F| (N)
+  Vec3 direction;        // unit, into the particles: the quantity is −F·n; zero: |F|
+  double area = 0;       // m², > 0: the quantity is a stress (force / area, Pa), else a force (N)
   double value = 0;      // N or Pa
   bool above = true;     // reached when quantity ≥ value (else ≤ value)
   double after = 0;      // s, checked from this time on

@@ -16,8 +16,11 @@ double TimeStepControl::decide(const ParticleStore& p, const MaterialTable& mate
     double r = p.radius[i];
     if (p.flags[i] & pflag::growing) {  // at full size: R = (3 m / (4 pi rho))^(1/3)
       const double rho = materials.material(p.material[i]).density;
-      r = std::max(r, std::cbrt(3 * p.mass[i] / (4 * std::numbers::pi * rho)));
+      r = std::max(r, std::cbrt(3 * p.physical_mass(i) / (4 * std::numbers::pi * rho)));
     }
+    // t_R is proportional to R sqrt(rho): a particle of mass scale s steps like one of radius
+    // R sqrt(s) (density scaling, docs/models.md "Time step")
+    r *= std::sqrt(p.mass_scale(i));
     double& m = r_min_[p.material[i]];
     m = std::min(m, r);
   }

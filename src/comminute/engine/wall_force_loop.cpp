@@ -34,10 +34,15 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
     };
     std::vector<Wear> wear;
     std::vector<EndedContact> ended;
+    std::vector<ContactStart> starts;
+    std::vector<ContactRecord> contacts;
   };
   const CollisionRecord* record = pipeline.collisions();
   std::vector<WallTally> part(static_cast<std::size_t>(nt));
   const Slots& slots = state.slots();
+  ContactStress* cs = pipeline.stress();
+  const bool armed = cs && cs->armed();
+  const bool list = armed && cs->contact_list_wanted();
 #pragma omp parallel num_threads(nt)
   {
     const int t = thread_id();
@@ -56,6 +61,8 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
         }
         return;
       }
+      if (cs && !state.active[q])
+        mine.starts.push_back({i, -1 - static_cast<std::int32_t>(c.wall)});
       state.active[q] = 1;
       const Vec3 nrm = hit.normal;
       const double overlap = hit.overlap;
@@ -81,6 +88,12 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       p.t[i] += out.rolling_torque - ri * cross(nrm, out.tangential_force);
       mine.force[c.wall] -= fc;
       mine.torque[c.wall] -= cross(hit.point - w.kinematics.center, fc);
+      if (armed) {  // Love–Weber: a particle's slots are all in this thread's range
+        add_sym_outer(cs->moment[i], fc, hit.point - p.x[i], 1.0);
+        if (list)
+          mine.contacts.push_back(
+              {i, -1 - static_cast<std::int32_t>(c.wall), p.x[i], hit.point, fc, out.normal_force});
+      }
       mine.energy.add(out);
       mine.energy.wall_work += dot(fc, vwall) * dt;  // power of the wall's force on the particle
       if (w.tracks_wear() && hit.element >= 0)
@@ -133,6 +146,10 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
     mine.energy.book(ledger, elastic);
     touching.insert(touching.end(), mine.touching.begin(), mine.touching.end());
     ended.insert(ended.end(), mine.ended.begin(), mine.ended.end());
+    if (cs) {
+      cs->starts.insert(cs->starts.end(), mine.starts.begin(), mine.starts.end());
+      cs->contacts.insert(cs->contacts.end(), mine.contacts.begin(), mine.contacts.end());
+    }
   }
 }
 

@@ -2,29 +2,16 @@
 // instead of read from an STL file; keys in docs/case-file.md (Ball mill walls).
 #include <fmt/format.h>
 
-#include <filesystem>
 #include <numbers>
 
 #include "comminute/geometry/ball_mill.hpp"
+#include "comminute/geometry/generated_mesh.hpp"
 #include "comminute/geometry/mesh_wall.hpp"
+#include "comminute/geometry/ramped_rotation.hpp"
 
 namespace comminute {
 
 namespace {
-
-// Turning about the mill axis (+y) at a fraction of the critical speed, reached linearly over
-// ramp_time.
-class MillDrive : public MotionModel {
- public:
-  MillDrive(double speed, double ramp_time) : speed_(speed), ramp_(ramp_time) {}
-  void at(double t, Vec3& v, Vec3& w) const override {
-    v = {};
-    w = {0, speed_ * (ramp_ > 0 ? std::min(1.0, t / ramp_) : 1.0), 0};
-  }
-
- private:
-  double speed_, ramp_;
-};
 
 BallMillGeometry read_geometry(const CaseTable& t) {
   BallMillGeometry g;
@@ -57,8 +44,9 @@ std::unique_ptr<MotionModel> read_drive(const CaseTable& t, const BallMillGeomet
   const double f = t.number("critical_speed_fraction", Limits{0.0, 2.0, true, false});
   const double d = t.number("ball_diameter", Limits::non_negative(), 0.0);
   if (d >= g.diameter) t.fail("ball_diameter", "must be below the mill diameter");
-  return std::make_unique<MillDrive>(f * critical_speed(g.diameter, d),
-                                     t.number("ramp_time", Limits::non_negative(), 0.0));
+  // turning about the mill axis (+y) at a fraction of the critical speed
+  return std::make_unique<RampedRotation>(Vec3{0, f * critical_speed(g.diameter, d), 0},
+                                          t.number("ramp_time", Limits::non_negative(), 0.0));
 }
 
 const bool registered = WallRegistry::add("ball_mill", [](const CaseTable& t) {
@@ -66,15 +54,7 @@ const bool registered = WallRegistry::add("ball_mill", [](const CaseTable& t) {
   IndexedMesh m = ball_mill_mesh(g);
   const Vec3 center = t.vec3("center", Limits::any(), {});
   for (Vec3& v : m.vertices) v += center;
-  if (t.has("stl_file")) {
-    const std::filesystem::path file = t.file_path("stl_file");
-    try {
-      if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-      write_stl(file, m);
-    } catch (const std::exception& e) {
-      t.fail("stl_file", e.what());
-    }
-  }
+  write_stl_if_asked(t, m);
   ArchardWear wear;
   wear.coefficient = t.number("wear_coefficient", Limits::non_negative(), 0.0);
   if (wear.coefficient > 0) wear.hardness = t.number("hardness", Limits::positive());

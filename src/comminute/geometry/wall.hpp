@@ -68,6 +68,12 @@ class Wall {
   // True when a contact passing from feature `from` to feature `to` (a sphere rolling from one
   // triangle to the next) is the same contact, whose history carries over. Analytic walls: never.
   virtual bool continues(int /*from*/, int /*to*/) const { return false; }
+  // The key of a touching feature after its particle was wrapped into a periodic domain by
+  // `shift` (PeriodicMap::Shift): a wall that stands for its periodic images re-keys it to the
+  // image the particle now meets; every other wall keeps it.
+  virtual int feature_after_wrap(int feature, const std::array<int, 3>& /*shift*/) const {
+    return feature;
+  }
   // Sliding wear: a contact on `element` (WallContact::element) pressed with normal force fn (N)
   // slid a distance s (m) in this step. Walls that do not track wear ignore it.
   virtual bool tracks_wear() const { return false; }

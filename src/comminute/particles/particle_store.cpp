@@ -132,6 +132,7 @@ std::size_t ParticleStore::add_field(const std::string& name, double initial_val
   field_names_.push_back(name);
   field_defaults_.push_back(initial_value);
   fields_.emplace_back(size(), initial_value);
+  if (name == mass_scale_field) scale_ = fields_.size() - 1;
   return fields_.size() - 1;
 }
 
@@ -149,7 +150,7 @@ bool ParticleStore::has_field(const std::string& name) const {
 
 double ParticleStore::total_mass() const {
   double m = 0;
-  for (std::size_t i = 0; i < owned(); ++i) m += mass[i];
+  for (std::size_t i = 0; i < owned(); ++i) m += physical_mass(i);
   return m;
 }
 

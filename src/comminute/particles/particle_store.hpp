@@ -82,12 +82,23 @@ class ParticleStore {
   std::uint64_t next_id() const { return next_id_; }
   void set_next_id(std::uint64_t n) { next_id_ = n; }  // checkpoints only
 
-  // Total mass (kg) and linear momentum (kg m/s) — conservation checks and outputs.
+  // Density scaling (docs/models.md, "Time step"): a module that gives small particles a heavier
+  // inertia registers the field `mass_scale` (s >= 1). mass[i] and inertia[i] are then the
+  // inertial values the dynamics use (s times those of the solid sphere); physical_mass(i) is the
+  // particle's real mass, mass[i] / s, which size distributions, outlets and mass balances count.
+  static constexpr const char* mass_scale_field = "mass_scale";
+  double mass_scale(std::size_t i) const { return scale_ == npos_ ? 1.0 : fields_[scale_][i]; }
+  double physical_mass(std::size_t i) const { return mass[i] / mass_scale(i); }
+
+  // Total physical mass (kg) and linear momentum of the inertial masses (kg m/s, the quantity
+  // the contact forces conserve) — conservation checks and outputs.
   double total_mass() const;
   Vec3 total_momentum() const;
 
  private:
+  static constexpr std::size_t npos_ = static_cast<std::size_t>(-1);
   std::uint64_t next_id_ = 1;
+  std::size_t scale_ = npos_;  // index of the mass_scale field, if registered
   std::vector<std::vector<double>> fields_;
   std::vector<std::string> field_names_;
   std::vector<double> field_defaults_;

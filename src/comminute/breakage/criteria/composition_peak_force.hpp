@@ -18,6 +18,7 @@ class CompositionPeakForce final : public PeakForce {
       : PeakForce(law, factor_sigma), relative_strength_(std::move(relative_strength)) {}
   std::string name() const override { return "composition_peak_force"; }
   void attach(ParticleStore& p) override;
+  const std::vector<double>& relative_strength() const { return relative_strength_; }
 
  protected:
   double critical_force(const ParticleStore& p, std::size_t i, double d) const override;

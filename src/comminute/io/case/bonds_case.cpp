@@ -18,6 +18,7 @@ bonds::BondsModule* add_bonds(const CaseTable& root, DemCase& dem) {
   bonds::BondOptions opt;
   opt.create_at = t->number("create_at", Limits::non_negative(), 0.0);
   opt.gap_tolerance = t->number("gap_tolerance", Limits::non_negative(), 0.0);
+  opt.within_grain = t->boolean("within_grain", false);
   if (t->has("materials")) {
     for (const std::string& name : t->strings("materials")) {
       const int k = sim.materials.find(name);

@@ -79,6 +79,10 @@ breakage::BreakageModule* add_breakage(const CaseTable& root, DemCase& dem) {
       opt.max_generations = static_cast<std::uint32_t>(g->integer("max_generations", 1, 1000000));
     opt.replacement_interval = static_cast<int>(g->integer("replacement_interval", 1, 1000, 1));
     opt.output_interval = g->number("output_interval", Limits::non_negative(), 0.0);
+    opt.time_step_floor = g->number("time_step_floor", Limits::unit_interval(), 0.1);
+    opt.floor_rule = g->choice("floor_rule", {"fines", "density_scaling"}, "fines") == "fines"
+                         ? breakage::FloorRule::fines
+                         : breakage::FloorRule::density_scaling;
     psd_interval = g->number("size_distribution_interval", Limits::non_negative(), 0.0);
     if (g->has("sieves")) sieves.sieves = g->numbers("sieves", Limits::positive());
     sieves.bottom = g->number("sieve_bottom", Limits::non_negative(), 0.0);

@@ -8,10 +8,12 @@
 #include "comminute/core/memory.hpp"
 #include "comminute/core/units.hpp"
 #include "comminute/engine/insertion.hpp"
+#include "comminute/io/case/cluster_case.hpp"
 #include "comminute/io/case/collisions_case.hpp"
 #include "comminute/io/case/lammps_data.hpp"
 #include "comminute/io/case/machine_case.hpp"
 #include "comminute/io/case/periodic_case.hpp"
+#include "comminute/io/case/statistics_case.hpp"
 #include "comminute/io/case/wall_builders.hpp"
 
 namespace comminute::io {
@@ -134,9 +136,14 @@ struct SmallestParticle {
   Vec3 lo, hi;  // m, bounding box of the region or the read particles
 };
 
-SmallestParticle read_insertion(const CaseTable& t, std::size_t index, Simulation& sim) {
-  const std::string type = t.choice("type", {"fill", "pour", "data_file"});
+SmallestParticle read_insertion(const CaseTable& root, const CaseTable& t, std::size_t index,
+                                Simulation& sim) {
+  const std::string type = t.choice("type", {"fill", "pour", "data_file", "clusters"});
   const std::uint16_t mat = material_index(t, "material", sim);
+  if (type == "clusters") {
+    const InsertedClusters c = insert_clusters(root, t, mat, index, sim);
+    return {c.radius, mat, c.radius, c.lo, c.hi};
+  }
   if (type == "data_file") {
     auto particles = read_lammps_data(t.input_file("file"), t.key_path("file"));
     double rmin = std::numeric_limits<double>::infinity();
@@ -228,8 +235,14 @@ DemCase build_dem_case(const CaseTable& root) {
   read_materials(root, sim);
   read_interactions(root, sim);
   read_contact(root, sim);
-  const auto walls = root.tables("walls");
-  for (std::size_t k = 0; k < walls.size(); ++k) sim.walls.push_back(build_wall(walls[k], k, sim));
+  // the table each wall came from (a generated machine gives several walls from one table)
+  std::vector<CaseTable> walls;
+  const auto wall_tables = root.tables("walls");
+  for (std::size_t k = 0; k < wall_tables.size(); ++k)
+    for (auto& w : build_walls(wall_tables[k], k, sim)) {
+      sim.walls.push_back(std::move(w));
+      walls.push_back(wall_tables[k]);
+    }
 
   const auto inserts = root.tables("insert");
   if (inserts.empty()) root.fail({}, "no particles: add at least one [[insert]] table");
@@ -237,7 +250,7 @@ DemCase build_dem_case(const CaseTable& root) {
   out.time_step = std::make_unique<TimeStepPolicy>(s, out.end_time);
   ParticleReach reach;
   for (std::size_t k = 0; k < inserts.size(); ++k) {
-    const SmallestParticle sp = read_insertion(inserts[k], k, sim);
+    const SmallestParticle sp = read_insertion(root, inserts[k], k, sim);
     out.time_step->add({sp.radius, sp.material, fmt::format("insert[{}]", k), false});
     reach.largest_diameter = std::max(reach.largest_diameter, 2 * sp.largest_radius);
     for (int a = 0; a < 3; ++a) {
@@ -248,6 +261,7 @@ DemCase build_dem_case(const CaseTable& root) {
   check_wall_names(walls, sim);
   add_machines(root, walls, sim);
   add_collision_log(root, sim);
+  add_statistics(root, sim);
   read_periodic(root, sim, reach);
   return out;
 }

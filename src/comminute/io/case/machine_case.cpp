@@ -148,6 +148,7 @@ void add_stop_conditions(const CaseTable& root, Simulation& sim) {
     } else {
       s.value = t.number("force", Limits::non_negative());
     }
+    if (t.has("direction")) s.direction = unit_vector(t, "direction");
     s.above = t.choice("when", {"above", "below"}, "above") == "above";
     s.after = t.number("after", Limits::non_negative(), 0.0);
     specs.push_back(s);

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <string>
 
+#include "comminute/geometry/periodic_images_wall.hpp"
+
 namespace comminute::io {
 
 namespace {
@@ -64,17 +66,23 @@ std::vector<Probe> face_probes(const PeriodicMap& map, const Vec3& lo, const Vec
 
 bool wall_matches(const Wall& w, const PeriodicMap& map, const Probe& pr, double margin,
                   double tol) {
+  // the contacts a sphere of radius `margin` would feel (a mesh reports one per planar patch, at
+  // its nearest point: independent of how the patch is cut into triangles)
   std::vector<WallContact> here, there;
-  w.contacts(pr.x, 0.0, margin, here);
-  w.contacts(map.point(pr.x, pr.image), 0.0, margin, there);
+  w.contacts(pr.x, margin, 0.0, here);
+  w.contacts(map.point(pr.x, pr.image), margin, 0.0, there);
   if (here.size() != there.size()) return false;
-  auto key = [](const WallContact& c) { return c.overlap; };
-  auto by_overlap = [&](const WallContact& a, const WallContact& b) { return key(a) < key(b); };
-  std::sort(here.begin(), here.end(), by_overlap);
-  std::sort(there.begin(), there.end(), by_overlap);
-  for (std::size_t k = 0; k < here.size(); ++k) {
-    if (std::abs(here[k].overlap - there[k].overlap) > tol) return false;
-    if (norm(map.vector(here[k].normal, pr.image) - there[k].normal) > 1e-9) return false;
+  // each contact here has its image there (same overlap, normal turned by the image); contacts
+  // with equal overlaps (mirror features of a mesh) are matched by their normals
+  std::vector<bool> used(there.size(), false);
+  for (const WallContact& c : here) {
+    const Vec3 n = map.vector(c.normal, pr.image);
+    bool found = false;
+    for (std::size_t k = 0; k < there.size() && !found; ++k)
+      if (!used[k] && std::abs(c.overlap - there[k].overlap) <= tol &&
+          norm(n - there[k].normal) <= 1e-9)
+        used[k] = found = true;
+    if (!found) return false;
   }
   return true;
 }
@@ -83,6 +91,13 @@ bool wall_matches(const Wall& w, const PeriodicMap& map, const Probe& pr, double
 
 void read_periodic(const CaseTable& root, Simulation& sim, const ParticleReach& reach) {
   const auto t = root.optional_table("periodic");
+  const auto wall_tables = root.tables("walls");
+  std::vector<bool> imaged(sim.walls.size(), false);
+  for (std::size_t k = 0; k < wall_tables.size() && k < sim.walls.size(); ++k) {
+    imaged[k] = wall_tables[k].boolean("periodic_images", false);
+    if (imaged[k] && !t)
+      wall_tables[k].fail("periodic_images", "needs a [periodic] table (axes or a sector)");
+  }
   if (!t) return;
   const double dmax = reach.largest_diameter;
   // the automatic skin is 0.2 × the mean diameter at the first build: at most 0.2 × the largest
@@ -135,26 +150,45 @@ void read_periodic(const CaseTable& root, Simulation& sim, const ParticleReach& 
     if (!(periodic[0] || periodic[1] || periodic[2]))
       t->fail({}, "give the bounds of at least one periodic axis (x, y, z) or a [periodic.sector]");
     map = PeriodicMap::axes(periodic, lo, hi);
-    for (const auto& w : sim.walls)
-      if (norm2(w->kinematics.angular_velocity) > 0 && w->surface_moves())
-        t->fail({}, fmt::format("wall '{}' rotates: its image across a periodic face would not "
-                                "follow it",
+    // a rotation about an axis along every periodic axis (a roll or a drum turning about the
+    // slice's axis) commutes with the periodic shifts: the wall stays the same on both sides
+    for (const auto& w : sim.walls) {
+      const Vec3& omega = w->kinematics.angular_velocity;
+      bool along = true;
+      for (int a = 0; a < 3; ++a) {
+        Vec3 e;
+        e[a] = 1;
+        if (periodic[static_cast<std::size_t>(a)] && norm(cross(omega, e)) > 1e-12 * norm(omega))
+          along = false;
+      }
+      if (norm2(omega) > 0 && w->surface_moves() && !along)
+        t->fail({}, fmt::format("wall '{}' rotates about an axis across a periodic axis: its "
+                                "image across a periodic face would not follow it",
                                 w->name));
+    }
   }
-  // every wall the same on both sides of each periodic face
+  // a wall given for one period stands for all its images (it is the same on both sides of each
+  // face by construction); every other wall must be the same on both sides of each face
+  for (std::size_t k = 0; k < sim.walls.size(); ++k)
+    if (imaged[k])
+      sim.walls[k] = std::make_unique<PeriodicImagesWall>(std::move(sim.walls[k]), map);
   Vec3 lo = reach.lo, hi = reach.hi;
   for (int a = 0; a < 3; ++a)
     if (!(lo[a] <= hi[a])) lo[a] = hi[a] = 0;
   double extent = 0;
   for (int a = 0; a < 3; ++a) extent = std::max(extent, hi[a] - lo[a]);
   const double margin = std::max(extent, 2 * (dmax + skin));
-  for (const auto& w : sim.walls)
+  for (std::size_t k = 0; k < sim.walls.size(); ++k) {
+    if (imaged[k]) continue;
+    const Wall* w = sim.walls[k].get();
     for (const Probe& pr : face_probes(map, lo, hi))
       if (!wall_matches(*w, map, pr, margin, 1e-9 * (margin + norm(pr.x))))
         t->fail({}, fmt::format("wall '{}' crosses a periodic face: it is not the same on both "
                                 "sides (seen differently from ({:.6g}, {:.6g}, {:.6g}) m and its "
-                                "periodic image)",
+                                "periodic image); give the wall for one period with "
+                                "periodic_images = true, or make it periodic itself",
                                 w->name, pr.x.x, pr.x.y, pr.x.z));
+  }
   sim.set_periodic(map);
 }
 

@@ -11,6 +11,7 @@
 #include "comminute/core/parallel.hpp"
 #include "comminute/engine/simulation.hpp"
 #include "comminute/io/output/checkpoint.hpp"
+#include "comminute/io/output/dataset_writer.hpp"
 
 namespace comminute::io {
 
@@ -143,6 +144,7 @@ void OutputModule::sample(Source& s, const Simulation& sim) {
 
 void OutputModule::write_tables(const Source& s, const Simulation& sim) const {
   for (const Table& t : s.source->tables(sim)) t.write(options_.directory);
+  for (const Dataset& d : s.source->datasets(sim)) write_dataset(options_.directory, d, sim.time);
 }
 
 // Half-size of drawn infinite planes: the largest edge of the box around the particles and the

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "comminute/core/atomic_file.hpp"
+#include "comminute/core/error.hpp"
 
 namespace comminute::io {
 
@@ -54,6 +55,18 @@ void write_arrays(std::ostream& os, const std::vector<VtkArray>& arrays, Appende
   }
 }
 
+// The raw appended block (each array: its UInt64 byte count, then its bytes) and the file's end.
+void write_appended(std::ostream& os, const Appended& app) {
+  os << "<AppendedData encoding=\"raw\">\n_";
+  for (const auto* b : app.blocks) {
+    const std::uint64_t count = b->size();
+    os.write(reinterpret_cast<const char*>(&count), sizeof count);
+    if (!b->empty())
+      os.write(reinterpret_cast<const char*>(b->data()), static_cast<std::streamsize>(b->size()));
+  }
+  os << "\n</AppendedData>\n</VTKFile>\n";
+}
+
 }  // namespace
 
 VtkArray vtk_array(std::string name, std::span<const double> v) {
@@ -86,9 +99,15 @@ void write_vtp(const std::filesystem::path& path, const VtkPolyData& pd) {
   const std::size_t n = pd.points.size();
   const std::size_t verts = pd.vertex_per_point ? n : 0;
   const std::size_t polys = pd.triangles.size();
+  const std::size_t lines = pd.lines.size();
 
   // Connectivity and offsets of the vertex and triangle cells (Int64, as VTK 9 writes them).
-  std::vector<std::int64_t> vconn(verts), voff(verts), pconn(3 * polys), poff(polys);
+  std::vector<std::int64_t> vconn(verts), voff(verts), pconn(3 * polys), poff(polys),
+      lconn(2 * lines), loff(lines);
+  for (std::size_t c = 0; c < lines; ++c) {
+    for (int k = 0; k < 2; ++k) lconn[2 * c + k] = pd.lines[c][k];
+    loff[c] = static_cast<std::int64_t>(2 * (c + 1));
+  }
   for (std::size_t i = 0; i < verts; ++i) {
     vconn[i] = static_cast<std::int64_t>(i);
     voff[i] = static_cast<std::int64_t>(i + 1);
@@ -104,7 +123,8 @@ void write_vtp(const std::filesystem::path& path, const VtkPolyData& pd) {
   };
   const std::vector<VtkArray> points{vtk_array("Points", std::span<const Vec3>(pd.points))};
   const std::vector<std::uint8_t> vconn_b = as_bytes(vconn), voff_b = as_bytes(voff),
-                                  pconn_b = as_bytes(pconn), poff_b = as_bytes(poff);
+                                  pconn_b = as_bytes(pconn), poff_b = as_bytes(poff),
+                                  lconn_b = as_bytes(lconn), loff_b = as_bytes(loff);
 
   AtomicFile file(path, std::ios::binary);
   std::ostream& os = file.stream();
@@ -118,9 +138,9 @@ void write_vtp(const std::filesystem::path& path, const VtkPolyData& pd) {
     os << "</FieldData>\n";
   }
   os << fmt::format(
-            R"(<Piece NumberOfPoints="{}" NumberOfVerts="{}" NumberOfLines="0" NumberOfStrips="0" )"
+            R"(<Piece NumberOfPoints="{}" NumberOfVerts="{}" NumberOfLines="{}" NumberOfStrips="0" )"
             R"(NumberOfPolys="{}">)",
-            n, verts, polys)
+            n, verts, lines, polys)
      << '\n';
   os << "<PointData>\n";
   write_arrays(os, pd.point_data, app, false);
@@ -141,15 +161,38 @@ void write_vtp(const std::filesystem::path& path, const VtkPolyData& pd) {
        << "\n</" << tag << ">\n";
   };
   cells("Verts", vconn_b, voff_b);
+  cells("Lines", lconn_b, loff_b);
   cells("Polys", pconn_b, poff_b);
-  os << "</Piece>\n</PolyData>\n<AppendedData encoding=\"raw\">\n_";
-  for (const auto* b : app.blocks) {
-    const std::uint64_t count = b->size();
-    os.write(reinterpret_cast<const char*>(&count), sizeof count);
-    if (!b->empty())
-      os.write(reinterpret_cast<const char*>(b->data()), static_cast<std::streamsize>(b->size()));
+  os << "</Piece>\n</PolyData>\n";
+  write_appended(os, app);
+  file.commit();
+}
+
+void write_vts(const std::filesystem::path& path, const VtkStructuredGrid& g) {
+  const char* order = std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
+  const auto [nx, ny, nz] = g.cells;
+  if (g.points.size() != (nx + 1) * (ny + 1) * (nz + 1))
+    throw Error("structured grid: the point count does not match the cells");
+  const std::vector<VtkArray> points{vtk_array("Points", std::span<const Vec3>(g.points))};
+  AtomicFile file(path, std::ios::binary);
+  std::ostream& os = file.stream();
+  Appended app;
+  const std::string extent = fmt::format("0 {} 0 {} 0 {}", nx, ny, nz);
+  os << "<?xml version=\"1.0\"?>\n"
+     << fmt::format(R"(<VTKFile type="StructuredGrid" version="1.0" byte_order="{}" )", order)
+     << "header_type=\"UInt64\">\n"
+     << fmt::format(R"(<StructuredGrid WholeExtent="{}">)", extent) << '\n';
+  if (!g.field_data.empty()) {
+    os << "<FieldData>\n";
+    write_arrays(os, g.field_data, app, true);
+    os << "</FieldData>\n";
   }
-  os << "\n</AppendedData>\n</VTKFile>\n";
+  os << fmt::format(R"(<Piece Extent="{}">)", extent) << "\n<CellData>\n";
+  write_arrays(os, g.cell_data, app, false);
+  os << "</CellData>\n<Points>\n";
+  write_arrays(os, points, app, false);
+  os << "</Points>\n</Piece>\n</StructuredGrid>\n";
+  write_appended(os, app);
   file.commit();
 }
 

@@ -34,11 +34,21 @@ VtkArray vtk_string_array(std::string name, const std::vector<std::string>& v);
 struct VtkPolyData {
   std::vector<Vec3> points;                             // m
   bool vertex_per_point = false;                        // one vertex cell per point (particles)
+  std::vector<std::array<std::uint32_t, 2>> lines;      // line cells (force chains)
   std::vector<std::array<std::uint32_t, 3>> triangles;  // polygon cells (wall surfaces)
   std::vector<VtkArray> point_data, cell_data, field_data;
 };
 
 // Writes `pd` to `path` atomically (.part then rename). Throws Error on I/O failure.
 void write_vtp(const std::filesystem::path& path, const VtkPolyData& pd);
+
+// A structured grid (.vts, ParaView): `cells` cells per direction, the points of the
+// (cells+1) lattice with the first index fastest, cell data in the same order.
+struct VtkStructuredGrid {
+  std::array<std::size_t, 3> cells{};
+  std::vector<Vec3> points;  // m
+  std::vector<VtkArray> cell_data, field_data;
+};
+void write_vts(const std::filesystem::path& path, const VtkStructuredGrid& g);
 
 }  // namespace comminute::io

@@ -17,13 +17,16 @@ VtkPolyData particle_polydata(const ParticleStore& p, double time,
   VtkPolyData pd;
   pd.points = p.x;
   pd.vertex_per_point = true;
-  std::vector<double> diameter(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) diameter[i] = 2 * p.radius[i];
+  std::vector<double> diameter(p.size()), mass(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    diameter[i] = 2 * p.radius[i];
+    mass[i] = p.physical_mass(i);  // the real mass (docs/models.md, density scaling)
+  }
   auto& a = pd.point_data;
   a.push_back(vtk_array("id", std::span<const std::uint64_t>(p.id)));
   a.push_back(vtk_array("radius", std::span<const double>(p.radius)));
   a.push_back(vtk_array("diameter", std::span<const double>(diameter)));
-  a.push_back(vtk_array("mass", std::span<const double>(p.mass)));
+  a.push_back(vtk_array("mass", std::span<const double>(mass)));
   a.push_back(vtk_array("velocity", std::span<const Vec3>(p.v)));
   a.push_back(vtk_array("angular_velocity", std::span<const Vec3>(p.w)));
   a.push_back(vtk_array("force", std::span<const Vec3>(p.f)));

@@ -5,8 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "comminute/geometry/cylinder_wall.hpp"
-#include "dem_fixture.hpp"
+#include "drum_fixture.hpp"
 
 using namespace comminute;
 using namespace comminute::testing;
@@ -28,31 +27,11 @@ struct DrumBalance {
   double change = 0;       // change of the stored energy / window
 };
 
-// 300 beads (r = 3.5 mm) in a capped drum (R = 50 mm, L = 40 mm, axis y) turning at 5 rad/s,
-// a third of the critical speed sqrt(g/R) = 14 rad/s: a rolling/cascading bed. 1.5 s spin-up
-// (about 1.2 turns, the bed has settled into its profile), then a 5 s window; step 5e-5 s.
-DrumBalance drum_balance(DemSetup s, const char* label) {
-  s.friction = 0.5;
-  s.restitution = 0.5;
-  s.gravity = {0, 0, -9.81};
-  auto sim = make_simulation(s);
-  const double R = 0.05, L = 0.04, r = 0.0035, omega = 5.0;
-  sim->walls.push_back(std::make_unique<CylinderWall>(Vec3{0, 0, 0}, Vec3{0, 1, 0}, R, L,
-                                                      /*inside=*/true, /*caps=*/true));
-  sim->walls[0]->kinematics.angular_velocity = {0, omega, 0};
-  sim->walls[0]->kinematics.center = {0, 0, 0};
-  // a loose lattice (spacing 2.3 r) filling the drum from the bottom up
-  const double h = 2.3 * r;
-  int n = 0;
-  for (double z = -R + 1.2 * r; z < R && n < 300; z += h)
-    for (double x = -R + 1.2 * r; x < R && n < 300; x += h)
-      for (double y = -L / 2 + 1.2 * r; y < L / 2 - 1.2 * r && n < 300; y += h)
-        if (std::hypot(x, z) < R - 1.2 * r) {
-          add_sphere(*sim, {x, y, z}, r);
-          ++n;
-        }
-  EXPECT_EQ(n, 300);
-  sim->dt = 5e-5;
+// The drum of drum_fixture.hpp: 1.5 s spin-up (about 1.2 turns, the bed has settled into its
+// profile), then a 5 s window; step 5e-5 s.
+DrumBalance drum_balance(const DemSetup& s, const char* label) {
+  auto sim = make_drum(s);  // drum_fixture.hpp
+  EXPECT_EQ(sim->particles.size(), 300u);
   sim->setup();
   sim->run(30000);
   const Observables a = sim->observe();

@@ -44,7 +44,7 @@ std::string csv_header(const std::vector<Column>& columns) {
   std::string s;
   for (std::size_t k = 0; k < columns.size(); ++k) {
     const Column& c = columns[k];
-    if (c.name.empty() || c.unit.empty() || breaks_csv(c.name) || breaks_csv(c.unit) ||
+    if (c.name.empty() || (c.unit.empty() != c.bare) || breaks_csv(c.name) || breaks_csv(c.unit) ||
         c.unit.find_first_of("[]") != std::string::npos)
       throw Error(fmt::format("'{}' [{}] cannot name a CSV column", c.name, c.unit));
     if (k > 0) s += ',';

@@ -18,7 +18,10 @@ namespace comminute {
 struct Column {
   std::string name;
   std::string unit;  // "-" for counts and dimensionless numbers
-  std::string header() const { return name + " [" + unit + "]"; }
+  // The header is the name alone (no unit given: the name holds it): only for a file that a
+  // reader of this program reads by fixed names (the collision spectrum's energy_J).
+  bool bare = false;
+  std::string header() const { return bare ? name : name + " [" + unit + "]"; }
 };
 
 class Cell {

@@ -1,13 +1,14 @@
 #pragma once
 // The contact model of a simulation, assembled once: the law, optional rolling resistance and
-// adhesion, and the loading record when a module asks for it. One evaluate() serves the pair
-// loop, the wall loop and modules that evaluate a contact at rest (breakage), so every contact
-// sees the same physics. assemble() declares every sub-model's per-contact slots in a fixed order
-// on a layout from which the engine's pair and wall stores are made.
+// adhesion, and the loading and collision records when a module asks for them. One evaluate()
+// serves the pair loop, the wall loop and modules that evaluate a contact at rest (breakage), so
+// every contact sees the same physics. assemble() declares every sub-model's per-contact slots in a
+// fixed order on a layout from which the engine's pair and wall stores are made.
 #include <memory>
 #include <vector>
 
 #include "comminute/contact/cohesion.hpp"
+#include "comminute/contact/collision_record.hpp"
 #include "comminute/contact/contact_law.hpp"
 #include "comminute/contact/loading_record.hpp"
 #include "comminute/contact/rolling_resistance.hpp"
@@ -29,6 +30,7 @@ class ContactPipeline {
     cohesion_ = cohesion;
     layout_ = ContactStateStore{};
     loading_.reset();
+    collisions_.reset();
     stress_.reset();
     law.declare(layout_);
     if (rolling) rolling->declare(layout_);
@@ -42,6 +44,12 @@ class ContactPipeline {
     if (!loading_) {
       loading_ = std::make_unique<LoadingRecord>();
       loading_->declare(module_layout());
+    }
+  }
+  void require_collision_record() {
+    if (!collisions_) {
+      collisions_ = std::make_unique<CollisionRecord>();
+      collisions_->declare(module_layout());
     }
   }
   // For modules, during assemble(): per-particle contact stress and the contact list
@@ -60,6 +68,7 @@ class ContactPipeline {
   const ContactStateStore& layout() const { return layout_; }
   // null unless a module asked for it
   const LoadingRecord* loading() const { return loading_.get(); }
+  const CollisionRecord* collisions() const { return collisions_.get(); }
   // null unless a module asked for it; the force loops and modules write it (not part of the
   // contact model's constness)
   ContactStress* stress() const { return stress_.get(); }
@@ -67,28 +76,37 @@ class ContactPipeline {
   void evaluate(const ContactKinematics& k, const PairParameters& p, const StateRef& s,
                 ContactForces& out) const {
     law_->compute(k, p, s, out);
-    if (cohesion_) cohesion_->compute(k, p, out);
-    if (rolling_) rolling_->compute(k, p, s, out);
-    if (loading_) loading_->record(s, k.overlap, out);
+    after_law(k, p, s, out);
   }
   // evaluate() for every contact of a batch: the law in one call, then the optional sub-models
   // contact by contact (each contact's result is the same as evaluate()'s).
   void evaluate(const ContactBatch& b) const {
     law_->compute_batch(b);
-    if (!cohesion_ && !rolling_ && !loading_) return;
+    if (!cohesion_ && !rolling_ && !loading_ && !collisions_) return;
     b.for_each([this](const ContactKinematics& k, const PairParameters& p, const StateRef& s,
-                      ContactForces& out) {
-      if (cohesion_) cohesion_->compute(k, p, out);
-      if (rolling_) rolling_->compute(k, p, s, out);
-      if (loading_) loading_->record(s, k.overlap, out);
-    });
+                      ContactForces& out) { after_law(k, p, s, out); });
   }
 
  private:
   ContactLaw* law_ = nullptr;
   RollingResistance* rolling_ = nullptr;
   Cohesion* cohesion_ = nullptr;
+  // The optional sub-models of one contact, after the law computed `out`.
+  void after_law(const ContactKinematics& k, const PairParameters& p, const StateRef& s,
+                 ContactForces& out) const {
+    double normal = 0, law_force = 0;
+    if (collisions_) {  // the law's normal dashpot, before adhesion changes the normal force
+      normal = CollisionRecord::normal_dissipation(k, out);
+      law_force = out.normal_force;
+    }
+    if (cohesion_) cohesion_->compute(k, p, out);
+    if (rolling_) rolling_->compute(k, p, s, out);
+    if (loading_) loading_->record(s, k.overlap, out);
+    if (collisions_) collisions_->record(s, k, out, normal, law_force);
+  }
+
   std::unique_ptr<LoadingRecord> loading_;
+  std::unique_ptr<CollisionRecord> collisions_;
   std::unique_ptr<ContactStress> stress_;
   bool assembling_ = false;
   ContactStateStore layout_;

@@ -35,7 +35,7 @@ std::vector<std::size_t> balanced_split(std::size_t n, int nt, Weight weight) {
 
 void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const NeighborList& pairs,
                         const ContactPipeline& pipeline, ContactStateStore& state, double dt,
-                        EnergyLedger& ledger, double& elastic) {
+                        EnergyLedger& ledger, double& elastic, std::vector<EndedContact>& ended) {
   const std::size_t n = p.size();
   const std::size_t npairs = pairs.size();
   const int nt = npairs >= 2 * kParallelMin ? max_threads() : 1;
@@ -49,6 +49,8 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
   for (int t = 1; t < nt; ++t)
     owner_begin[t] = split[t] < npairs ? pairs.first[split[t]] : static_cast<std::uint32_t>(n);
   cross_.resize(static_cast<std::size_t>(nt));
+  ended_.resize(static_cast<std::size_t>(nt));
+  const CollisionRecord* record = pipeline.collisions();
   ContactStress* cs = pipeline.stress();
   const bool armed = cs && cs->armed();
   const bool want_list = armed && cs->contact_list_wanted();
@@ -69,6 +71,8 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
     const std::uint32_t own0 = owner_begin[t], own1 = owner_begin[t + 1];
     auto& queued = cross_[t];
     queued.clear();
+    auto& separated = ended_[t];
+    separated.clear();
     StressPart* sp = cs ? &stress_[t] : nullptr;
     if (sp) {
       sp->cross.clear();
@@ -128,7 +132,10 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
       const double rsum = R[i] + R[j];
       const double dist2 = norm2(d);
       if (dist2 >= rsum * rsum) {
-        if (active[k]) state.clear(k);  // the bodies separated: the contact's state is gone
+        if (active[k]) {  // the bodies separated: the contact's state is gone
+          if (record) separated.push_back({i, j, false, record->totals(state.at(k))});
+          state.clear(k);
+        }
         continue;
       }
       if (sp && !active[k]) sp->starts.push_back({i, static_cast<std::int32_t>(j)});
@@ -163,6 +170,7 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
       p.t[c.particle] += c.torque;
     }
   for (const auto& tl : tally) tl.book(ledger, elastic);
+  for (const auto& list : ended_) ended.insert(ended.end(), list.begin(), list.end());
   if (cs)
     for (const auto& part : stress_) {
       for (const auto& c : part.cross) {

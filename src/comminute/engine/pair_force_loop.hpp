@@ -9,6 +9,7 @@
 
 #include "comminute/contact/contact_state.hpp"
 #include "comminute/engine/contact_pipeline.hpp"
+#include "comminute/engine/ended_contact.hpp"
 #include "comminute/engine/energy_tally.hpp"
 #include "comminute/neighbor/neighbor_list.hpp"
 #include "comminute/particles/material.hpp"
@@ -20,19 +21,22 @@ class PairForceLoop {
  public:
   // Adds the contact forces and torques of every touching pair to p.f, p.t, updates `state`
   // (active flags, slots), books the step's dissipation in `ledger` and adds the elastic energy
-  // held in the contacts to `elastic` (J), thread by thread in order. When the pipeline carries a
-  // ContactStress, lists the contacts that began and, on armed steps, fills its moments, counts
-  // and contact list (the other particle's share queued like its force, lists in thread order).
+  // held in the contacts to `elastic` (J), thread by thread in order. When the pipeline keeps
+  // the collision record, appends the pairs that separated to `ended`, in pair order. When the
+  // pipeline carries a ContactStress, lists the contacts that began and, on armed steps, fills its
+  // moments, counts and contact list (the other particle's share queued like its force, lists in
+  // thread order).
   void run(ParticleStore& p, const MaterialTable& materials, const NeighborList& pairs,
            const ContactPipeline& pipeline, ContactStateStore& state, double dt,
-           EnergyLedger& ledger, double& elastic);
+           EnergyLedger& ledger, double& elastic, std::vector<EndedContact>& ended);
 
  private:
   struct CrossForce {  // a pair's share for a particle owned by another thread
     std::uint32_t particle;
     Vec3 force, torque;
   };
-  std::vector<std::vector<CrossForce>> cross_;  // per thread, reused
+  std::vector<std::vector<CrossForce>> cross_;    // per thread, reused
+  std::vector<std::vector<EndedContact>> ended_;  // per thread, reused
   struct CrossMoment {  // a pair's Love–Weber share for a particle owned by another thread
     std::uint32_t particle;
     std::uint32_t load_bearing;

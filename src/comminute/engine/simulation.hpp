@@ -109,6 +109,9 @@ class Simulation {
   const ContactStateStore& pair_state() const { return pair_state_; }
   const ContactStateStore& wall_state() const { return wall_state_; }
   const std::vector<WallContactRecord>& wall_contacts() const { return wall_contacts_; }
+  // The contacts that ended in the last force computation (pairs, then walls, in list order),
+  // when the contact model keeps the collision record (a module asked for it); else empty.
+  const std::vector<EndedContact>& ended_contacts() const { return ended_contacts_; }
   // The contact model (law, rolling, adhesion, loading record), assembled at setup or load.
   const ContactPipeline& contacts() const { return contacts_; }
   Observables observe() const;
@@ -131,6 +134,7 @@ class Simulation {
   PairForceLoop pair_loop_;
   WallForceLoop wall_loop_;
   std::vector<WallContactRecord> wall_contacts_;  // touching now
+  std::vector<EndedContact> ended_contacts_;      // ended in the last force computation
   bool forces_cleared_ = false;
   bool is_setup_ = false;
   double elastic_energy_ = 0;

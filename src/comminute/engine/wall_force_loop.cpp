@@ -12,7 +12,8 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
                         const std::vector<WallContactRecord>& candidates,
                         const ContactPipeline& pipeline, ContactStateStore& state, double dt,
                         EnergyLedger& ledger, double& elastic,
-                        std::vector<WallContactRecord>& touching) {
+                        std::vector<WallContactRecord>& touching,
+                        std::vector<EndedContact>& ended) {
   const std::size_t nc = candidates.size();
   const int nt = nc >= kParallelMin / 2 ? max_threads() : 1;
   std::vector<std::size_t> begin(static_cast<std::size_t>(nt) + 1, nc);
@@ -32,9 +33,11 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       double fn, slip;  // N, m
     };
     std::vector<Wear> wear;
+    std::vector<EndedContact> ended;
     std::vector<ContactStart> starts;
     std::vector<ContactRecord> contacts;
   };
+  const CollisionRecord* record = pipeline.collisions();
   std::vector<WallTally> part(static_cast<std::size_t>(nt));
   const Slots& slots = state.slots();
   ContactStress* cs = pipeline.stress();
@@ -52,7 +55,10 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       const std::uint32_t i = c.particle;
       Wall& w = *walls[c.wall];
       if (hit.overlap <= 0) {
-        if (state.active[q]) state.clear(q);
+        if (state.active[q]) {
+          if (record) mine.ended.push_back({i, c.wall, true, record->totals(state.at(q))});
+          state.clear(q);
+        }
         return;
       }
       if (cs && !state.active[q])
@@ -139,6 +145,7 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
     for (const auto& e : mine.wear) walls[e.wall]->wear(e.element, e.fn, e.slip);
     mine.energy.book(ledger, elastic);
     touching.insert(touching.end(), mine.touching.begin(), mine.touching.end());
+    ended.insert(ended.end(), mine.ended.begin(), mine.ended.end());
     if (cs) {
       cs->starts.insert(cs->starts.end(), mine.starts.begin(), mine.starts.end());
       cs->contacts.insert(cs->contacts.end(), mine.contacts.begin(), mine.contacts.end());

@@ -10,6 +10,7 @@
 
 #include "comminute/contact/contact_state.hpp"
 #include "comminute/engine/contact_pipeline.hpp"
+#include "comminute/engine/ended_contact.hpp"
 #include "comminute/engine/energy_tally.hpp"
 #include "comminute/engine/wall_contact.hpp"
 #include "comminute/geometry/wall.hpp"
@@ -22,12 +23,13 @@ class WallForceLoop {
  public:
   // Adds the wall contact forces to p.f, p.t and their reactions to each wall's force and torque,
   // updates `state`, books the dissipation and the walls' work in `ledger`, adds the elastic
-  // energy to `elastic` (J), and lists the touching contacts in `touching`.
+  // energy to `elastic` (J), and lists the touching contacts in `touching`. When the pipeline
+  // keeps the collision record, appends the contacts that ended to `ended`, in candidate order.
   void run(ParticleStore& p, const MaterialTable& materials,
            const std::vector<std::unique_ptr<Wall>>& walls,
            const std::vector<WallContactRecord>& candidates, const ContactPipeline& pipeline,
            ContactStateStore& state, double dt, EnergyLedger& ledger, double& elastic,
-           std::vector<WallContactRecord>& touching);
+           std::vector<WallContactRecord>& touching, std::vector<EndedContact>& ended);
 };
 
 }  // namespace comminute

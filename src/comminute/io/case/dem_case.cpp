@@ -9,6 +9,7 @@
 #include "comminute/core/units.hpp"
 #include "comminute/engine/insertion.hpp"
 #include "comminute/io/case/cluster_case.hpp"
+#include "comminute/io/case/collisions_case.hpp"
 #include "comminute/io/case/lammps_data.hpp"
 #include "comminute/io/case/machine_case.hpp"
 #include "comminute/io/case/periodic_case.hpp"
@@ -259,6 +260,7 @@ DemCase build_dem_case(const CaseTable& root) {
   }
   check_wall_names(walls, sim);
   add_machines(root, walls, sim);
+  add_collision_log(root, sim);
   add_statistics(root, sim);
   read_periodic(root, sim, reach);
   return out;

@@ -14,6 +14,7 @@
 #include "comminute/core/error.hpp"
 #include "comminute/io/case/breakage_case.hpp"
 #include "comminute/io/case/dem_case.hpp"
+#include "comminute/io/case/output_case.hpp"
 #include "comminute/io/case/texture_case.hpp"
 #include "source_file.hpp"
 #include "temp_dir.hpp"
@@ -53,29 +54,35 @@ Built build(const std::string& text) {
 
 }  // namespace
 
+// The texture examples: the drop-weight test and the template of the HPGR texture study (its 8
+// generated cases are checked by tests/scripts/test_hpgr_texture_sweep.sh).
 TEST(TextureCase, ExampleKeysAreReadAndDocumented) {
   const std::string doc = comminute::testing::read_source_file("docs/breakage.md"),
                     case_doc = comminute::testing::read_source_file("docs/case-file.md");
-  CaseFile f = CaseFile::load(std::string(COMMINUTE_SOURCE_DIR) +
-                              "/examples/texture/drop_weight_texture.toml");
-  io::DemCase dem = io::build_dem_case(f.root());
-  ASSERT_NE(io::add_breakage(f.root(), dem), nullptr);
-  ASSERT_NE(io::add_texture(f.root(), dem), nullptr);
-  f.reject_unknown();
-  for (const std::string& path : f.used_keys()) {
-    std::string leaf = path.substr(path.find_last_of('.') + 1);
-    leaf = leaf.substr(0, leaf.find('['));
-    if (path.find('.') == std::string::npos) {
-      EXPECT_NE(case_doc.find("[" + leaf), std::string::npos) << path;
-      continue;
+  for (const char* example :
+       {"/examples/texture/drop_weight_texture.toml", "/examples/hpgr_texture/hpgr_texture.toml"}) {
+    SCOPED_TRACE(example);
+    CaseFile f = CaseFile::load(std::string(COMMINUTE_SOURCE_DIR) + example);
+    io::DemCase dem = io::build_dem_case(f.root());
+    ASSERT_NE(io::add_breakage(f.root(), dem), nullptr);
+    ASSERT_NE(io::add_texture(f.root(), dem), nullptr);
+    if (auto o = f.root().optional_table("output")) io::read_output_options(*o);
+    f.reject_unknown();
+    for (const std::string& path : f.used_keys()) {
+      std::string leaf = path.substr(path.find_last_of('.') + 1);
+      leaf = leaf.substr(0, leaf.find('['));
+      if (path.find('.') == std::string::npos) {
+        EXPECT_NE(case_doc.find("[" + leaf), std::string::npos) << path;
+        continue;
+      }
+      if (path.rfind("materials.", 0) == 0 && path.find('.', 10) == std::string::npos) continue;
+      if (leaf == "breakage" || leaf == "progeny" || leaf == "generator" || leaf == "phases" ||
+          leaf == "grains")
+        continue;  // sub-tables
+      EXPECT_TRUE(doc.find("`" + leaf + "`") != std::string::npos ||
+                  case_doc.find("`" + leaf + "`") != std::string::npos)
+          << path << " is not documented";
     }
-    if (path.rfind("materials.", 0) == 0 && path.find('.', 10) == std::string::npos) continue;
-    if (leaf == "breakage" || leaf == "progeny" || leaf == "generator" || leaf == "phases" ||
-        leaf == "grains")
-      continue;  // sub-tables
-    EXPECT_TRUE(doc.find("`" + leaf + "`") != std::string::npos ||
-                case_doc.find("`" + leaf + "`") != std::string::npos)
-        << path << " is not documented";
   }
 }
 

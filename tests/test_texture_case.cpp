@@ -229,6 +229,44 @@ TEST(TextureCase, TextureFeedsTheCompositionCriterion) {
   EXPECT_FALSE(broken(text));  // F_crit = 1000 F_CS
 }
 
+// The phase-weighted option of tavares (docs/models.md eq. C2b) fed by the texture: an all-strong
+// image with f_rel = 1000 keeps the particles whole at an impact (~200 J/kg) that breaks them
+// without the texture (E50 ~ 60 J/kg); a list that differs from the phases' is refused.
+TEST(TextureCase, TextureFeedsThePhaseWeightedTavares) {
+  const comminute::testing::TestDir dir;
+  const std::string raw = (dir.path() / "strong.raw").string();
+  breakage::texture::write_raw_texture(
+      raw, breakage::texture::TextureVolume(8, 8, 8, 1e-3, std::vector<std::uint8_t>(512, 1),
+                                            {{"weak", 2650.0, 1.0}, {"strong", 2650.0, 1000.0}}));
+  std::string text = example_text();
+  const auto g = text.find("[texture.generator]"), l = text.find("[liberation]");
+  text.replace(g, l - g, "");
+  text.replace(text.find("[texture]\n"), 10, "[texture]\nimage = \"" + raw + "\"\n");
+  const auto c = text.find("criterion = \"composition_peak_force\"");
+  const auto f = text.find("factor_sigma = 0.3");
+  text.replace(c, f + 18 - c,
+               "criterion = \"tavares\"\ne_inf = 60.0\nsigma = 0.3\n"
+               "relative_strength = [1.0, 1000.0]");
+  text.replace(text.find("relative_strength = 2.0"), 23, "relative_strength = 1000.0");
+  text.replace(text.find("count = 200"), 11, "count = 12");
+  std::string plain = text;
+  plain.erase(plain.find("[texture]"), plain.find("[[walls]]") - plain.find("[texture]"));
+  auto broken = [](const std::string& t) {
+    Built b = build(t);
+    Simulation& sim = *b.dem.sim;
+    io::decide_time_step(b.dem);
+    sim.setup();
+    while (sim.time < 0.0008) sim.step();
+    return sim.particles.size() > 12;
+  };
+  EXPECT_TRUE(broken(plain));  // composition (1, 0): E = E50 scale, far below the impact
+  EXPECT_FALSE(broken(text));  // composition (0, 1): E times 1000
+  std::string wrong = text;
+  wrong.replace(wrong.find("relative_strength = [1.0, 1000.0]"), 33,
+                "relative_strength = [1.0, 999.0]");
+  EXPECT_THROW(build(wrong), InputError);
+}
+
 // A TIFF stack as the image: needs voxel_size (TIFF has no physical size), which a raw image
 // must not have.
 TEST(TextureCase, TiffStackImage) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -198,12 +199,13 @@ TEST(TextureCase, LiberationOfTheOutletStreamOverAWindow) {
   EXPECT_TRUE(recent.empty());
 }
 
-// The texture feeds the composition criterion: an ore that is all phase 1, a thousand times
-// stronger than phase 0, does not break at an impact that breaks the same particles when they
-// carry no texture (composition.0 = 1 by default).
-TEST(TextureCase, TextureFeedsTheCompositionCriterion) {
-  const comminute::testing::TestDir dir;
-  const std::string raw = (dir.path() / "strong.raw").string();
+namespace {
+
+// The example with an 8^3 image that is all phase 1 ("strong", f_rel = 1000 against "weak", 1)
+// and 12 particles; the text from `from` to the end of `through` replaced by `criterion`.
+std::string all_strong_case(const std::filesystem::path& dir, const std::string& from,
+                            const std::string& through, const std::string& criterion) {
+  const std::string raw = (dir / "strong.raw").string();
   breakage::texture::write_raw_texture(
       raw, breakage::texture::TextureVolume(8, 8, 8, 1e-3, std::vector<std::uint8_t>(512, 1),
                                             {{"weak", 2650.0, 1.0}, {"strong", 2650.0, 1000.0}}));
@@ -211,22 +213,41 @@ TEST(TextureCase, TextureFeedsTheCompositionCriterion) {
   const auto g = text.find("[texture.generator]"), l = text.find("[liberation]");
   text.replace(g, l - g, "");
   text.replace(text.find("[texture]\n"), 10, "[texture]\nimage = \"" + raw + "\"\n");
-  text.replace(text.find("relative_strength = [1.0, 2.0]"), 30,
-               "relative_strength = [1.0, 1000.0]");
+  const auto c = text.find(from), e = text.find(through, c) + through.size();
+  text.replace(c, e - c, criterion);
   text.replace(text.find("relative_strength = 2.0"), 23, "relative_strength = 1000.0");
   text.replace(text.find("count = 200"), 11, "count = 12");
-  std::string plain = text;
-  plain.erase(plain.find("[texture]"), plain.find("[[walls]]") - plain.find("[texture]"));
-  auto broken = [](const std::string& t) {
-    Built b = build(t);
-    Simulation& sim = *b.dem.sim;
-    io::decide_time_step(b.dem);
-    sim.setup();
-    while (sim.time < 0.0008) sim.step();
-    return sim.particles.size() > 12;
-  };
-  EXPECT_TRUE(broken(plain));  // F_crit = F_CS: the 20 m/s impact (~2 kN) breaks them
-  EXPECT_FALSE(broken(text));  // F_crit = 1000 F_CS
+  return text;
+}
+
+// The case without [texture] and [liberation] (composition.0 = 1 by default).
+std::string without_texture(std::string text) {
+  text.erase(text.find("[texture]"), text.find("[[walls]]") - text.find("[texture]"));
+  return text;
+}
+
+// True when some of the 12 particles broke in the first 0.8 ms (the impact on the anvil).
+bool broken(const std::string& text) {
+  Built b = build(text);
+  Simulation& sim = *b.dem.sim;
+  io::decide_time_step(b.dem);
+  sim.setup();
+  while (sim.time < 0.0008) sim.step();
+  return sim.particles.size() > 12;
+}
+
+}  // namespace
+
+// The texture feeds the composition criterion: an ore that is all phase 1, a thousand times
+// stronger than phase 0, does not break at an impact that breaks the same particles when they
+// carry no texture (composition.0 = 1 by default).
+TEST(TextureCase, TextureFeedsTheCompositionCriterion) {
+  const comminute::testing::TestDir dir;
+  const std::string list = "relative_strength = [1.0, 2.0]";
+  const std::string text =
+      all_strong_case(dir.path(), list, list, "relative_strength = [1.0, 1000.0]");
+  EXPECT_TRUE(broken(without_texture(text)));  // F_crit = F_CS: the 20 m/s impact (~2 kN)
+  EXPECT_FALSE(broken(text));                  // F_crit = 1000 F_CS
 }
 
 // The phase-weighted option of tavares (docs/models.md eq. C2b) fed by the texture: an all-strong
@@ -234,33 +255,11 @@ TEST(TextureCase, TextureFeedsTheCompositionCriterion) {
 // without the texture (E50 ~ 60 J/kg); a list that differs from the phases' is refused.
 TEST(TextureCase, TextureFeedsThePhaseWeightedTavares) {
   const comminute::testing::TestDir dir;
-  const std::string raw = (dir.path() / "strong.raw").string();
-  breakage::texture::write_raw_texture(
-      raw, breakage::texture::TextureVolume(8, 8, 8, 1e-3, std::vector<std::uint8_t>(512, 1),
-                                            {{"weak", 2650.0, 1.0}, {"strong", 2650.0, 1000.0}}));
-  std::string text = example_text();
-  const auto g = text.find("[texture.generator]"), l = text.find("[liberation]");
-  text.replace(g, l - g, "");
-  text.replace(text.find("[texture]\n"), 10, "[texture]\nimage = \"" + raw + "\"\n");
-  const auto c = text.find("criterion = \"composition_peak_force\"");
-  const auto f = text.find("factor_sigma = 0.3");
-  text.replace(c, f + 18 - c,
-               "criterion = \"tavares\"\ne_inf = 60.0\nsigma = 0.3\n"
-               "relative_strength = [1.0, 1000.0]");
-  text.replace(text.find("relative_strength = 2.0"), 23, "relative_strength = 1000.0");
-  text.replace(text.find("count = 200"), 11, "count = 12");
-  std::string plain = text;
-  plain.erase(plain.find("[texture]"), plain.find("[[walls]]") - plain.find("[texture]"));
-  auto broken = [](const std::string& t) {
-    Built b = build(t);
-    Simulation& sim = *b.dem.sim;
-    io::decide_time_step(b.dem);
-    sim.setup();
-    while (sim.time < 0.0008) sim.step();
-    return sim.particles.size() > 12;
-  };
-  EXPECT_TRUE(broken(plain));  // composition (1, 0): E = E50 scale, far below the impact
-  EXPECT_FALSE(broken(text));  // composition (0, 1): E times 1000
+  const std::string text = all_strong_case(
+      dir.path(), "criterion = \"composition_peak_force\"", "factor_sigma = 0.3",
+      "criterion = \"tavares\"\ne_inf = 60.0\nsigma = 0.3\nrelative_strength = [1.0, 1000.0]");
+  EXPECT_TRUE(broken(without_texture(text)));  // composition (1, 0): E ~ E50, below the impact
+  EXPECT_FALSE(broken(text));                  // composition (0, 1): E times 1000
   std::string wrong = text;
   wrong.replace(wrong.find("relative_strength = [1.0, 1000.0]"), 33,
                 "relative_strength = [1.0, 999.0]");

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "comminute/core/error.hpp"
 #include "comminute/io/case/breakage_case.hpp"
 #include "comminute/io/case/dem_case.hpp"
+#include "comminute/io/case/output_case.hpp"
 #include "comminute/io/case/texture_case.hpp"
 #include "source_file.hpp"
 #include "temp_dir.hpp"
@@ -53,29 +55,35 @@ Built build(const std::string& text) {
 
 }  // namespace
 
+// The texture examples: the drop-weight test and the template of the HPGR texture study (its 8
+// generated cases are checked by tests/scripts/test_hpgr_texture_sweep.sh).
 TEST(TextureCase, ExampleKeysAreReadAndDocumented) {
   const std::string doc = comminute::testing::read_source_file("docs/breakage.md"),
                     case_doc = comminute::testing::read_source_file("docs/case-file.md");
-  CaseFile f = CaseFile::load(std::string(COMMINUTE_SOURCE_DIR) +
-                              "/examples/texture/drop_weight_texture.toml");
-  io::DemCase dem = io::build_dem_case(f.root());
-  ASSERT_NE(io::add_breakage(f.root(), dem), nullptr);
-  ASSERT_NE(io::add_texture(f.root(), dem), nullptr);
-  f.reject_unknown();
-  for (const std::string& path : f.used_keys()) {
-    std::string leaf = path.substr(path.find_last_of('.') + 1);
-    leaf = leaf.substr(0, leaf.find('['));
-    if (path.find('.') == std::string::npos) {
-      EXPECT_NE(case_doc.find("[" + leaf), std::string::npos) << path;
-      continue;
+  for (const char* example :
+       {"/examples/texture/drop_weight_texture.toml", "/examples/hpgr_texture/hpgr_texture.toml"}) {
+    SCOPED_TRACE(example);
+    CaseFile f = CaseFile::load(std::string(COMMINUTE_SOURCE_DIR) + example);
+    io::DemCase dem = io::build_dem_case(f.root());
+    ASSERT_NE(io::add_breakage(f.root(), dem), nullptr);
+    ASSERT_NE(io::add_texture(f.root(), dem), nullptr);
+    if (auto o = f.root().optional_table("output")) io::read_output_options(*o);
+    f.reject_unknown();
+    for (const std::string& path : f.used_keys()) {
+      std::string leaf = path.substr(path.find_last_of('.') + 1);
+      leaf = leaf.substr(0, leaf.find('['));
+      if (path.find('.') == std::string::npos) {
+        EXPECT_NE(case_doc.find("[" + leaf), std::string::npos) << path;
+        continue;
+      }
+      if (path.rfind("materials.", 0) == 0 && path.find('.', 10) == std::string::npos) continue;
+      if (leaf == "breakage" || leaf == "progeny" || leaf == "generator" || leaf == "phases" ||
+          leaf == "grains")
+        continue;  // sub-tables
+      EXPECT_TRUE(doc.find("`" + leaf + "`") != std::string::npos ||
+                  case_doc.find("`" + leaf + "`") != std::string::npos)
+          << path << " is not documented";
     }
-    if (path.rfind("materials.", 0) == 0 && path.find('.', 10) == std::string::npos) continue;
-    if (leaf == "breakage" || leaf == "progeny" || leaf == "generator" || leaf == "phases" ||
-        leaf == "grains")
-      continue;  // sub-tables
-    EXPECT_TRUE(doc.find("`" + leaf + "`") != std::string::npos ||
-                case_doc.find("`" + leaf + "`") != std::string::npos)
-        << path << " is not documented";
   }
 }
 
@@ -191,12 +199,13 @@ TEST(TextureCase, LiberationOfTheOutletStreamOverAWindow) {
   EXPECT_TRUE(recent.empty());
 }
 
-// The texture feeds the composition criterion: an ore that is all phase 1, a thousand times
-// stronger than phase 0, does not break at an impact that breaks the same particles when they
-// carry no texture (composition.0 = 1 by default).
-TEST(TextureCase, TextureFeedsTheCompositionCriterion) {
-  const comminute::testing::TestDir dir;
-  const std::string raw = (dir.path() / "strong.raw").string();
+namespace {
+
+// The example with an 8^3 image that is all phase 1 ("strong", f_rel = 1000 against "weak", 1)
+// and 12 particles; the text from `from` to the end of `through` replaced by `criterion`.
+std::string all_strong_case(const std::filesystem::path& dir, const std::string& from,
+                            const std::string& through, const std::string& criterion) {
+  const std::string raw = (dir / "strong.raw").string();
   breakage::texture::write_raw_texture(
       raw, breakage::texture::TextureVolume(8, 8, 8, 1e-3, std::vector<std::uint8_t>(512, 1),
                                             {{"weak", 2650.0, 1.0}, {"strong", 2650.0, 1000.0}}));
@@ -204,22 +213,57 @@ TEST(TextureCase, TextureFeedsTheCompositionCriterion) {
   const auto g = text.find("[texture.generator]"), l = text.find("[liberation]");
   text.replace(g, l - g, "");
   text.replace(text.find("[texture]\n"), 10, "[texture]\nimage = \"" + raw + "\"\n");
-  text.replace(text.find("relative_strength = [1.0, 2.0]"), 30,
-               "relative_strength = [1.0, 1000.0]");
+  const auto c = text.find(from), e = text.find(through, c) + through.size();
+  text.replace(c, e - c, criterion);
   text.replace(text.find("relative_strength = 2.0"), 23, "relative_strength = 1000.0");
   text.replace(text.find("count = 200"), 11, "count = 12");
-  std::string plain = text;
-  plain.erase(plain.find("[texture]"), plain.find("[[walls]]") - plain.find("[texture]"));
-  auto broken = [](const std::string& t) {
-    Built b = build(t);
-    Simulation& sim = *b.dem.sim;
-    io::decide_time_step(b.dem);
-    sim.setup();
-    while (sim.time < 0.0008) sim.step();
-    return sim.particles.size() > 12;
-  };
-  EXPECT_TRUE(broken(plain));  // F_crit = F_CS: the 20 m/s impact (~2 kN) breaks them
-  EXPECT_FALSE(broken(text));  // F_crit = 1000 F_CS
+  return text;
+}
+
+// The case without [texture] and [liberation] (composition.0 = 1 by default).
+std::string without_texture(std::string text) {
+  text.erase(text.find("[texture]"), text.find("[[walls]]") - text.find("[texture]"));
+  return text;
+}
+
+// True when some of the 12 particles broke in the first 0.8 ms (the impact on the anvil).
+bool broken(const std::string& text) {
+  Built b = build(text);
+  Simulation& sim = *b.dem.sim;
+  io::decide_time_step(b.dem);
+  sim.setup();
+  while (sim.time < 0.0008) sim.step();
+  return sim.particles.size() > 12;
+}
+
+}  // namespace
+
+// The texture feeds the composition criterion: an ore that is all phase 1, a thousand times
+// stronger than phase 0, does not break at an impact that breaks the same particles when they
+// carry no texture (composition.0 = 1 by default).
+TEST(TextureCase, TextureFeedsTheCompositionCriterion) {
+  const comminute::testing::TestDir dir;
+  const std::string list = "relative_strength = [1.0, 2.0]";
+  const std::string text =
+      all_strong_case(dir.path(), list, list, "relative_strength = [1.0, 1000.0]");
+  EXPECT_TRUE(broken(without_texture(text)));  // F_crit = F_CS: the 20 m/s impact (~2 kN)
+  EXPECT_FALSE(broken(text));                  // F_crit = 1000 F_CS
+}
+
+// The phase-weighted option of tavares (docs/models.md eq. C2b) fed by the texture: an all-strong
+// image with f_rel = 1000 keeps the particles whole at an impact (~200 J/kg) that breaks them
+// without the texture (E50 ~ 60 J/kg); a list that differs from the phases' is refused.
+TEST(TextureCase, TextureFeedsThePhaseWeightedTavares) {
+  const comminute::testing::TestDir dir;
+  const std::string text = all_strong_case(
+      dir.path(), "criterion = \"composition_peak_force\"", "factor_sigma = 0.3",
+      "criterion = \"tavares\"\ne_inf = 60.0\nsigma = 0.3\nrelative_strength = [1.0, 1000.0]");
+  EXPECT_TRUE(broken(without_texture(text)));  // composition (1, 0): E ~ E50, below the impact
+  EXPECT_FALSE(broken(text));                  // composition (0, 1): E times 1000
+  std::string wrong = text;
+  wrong.replace(wrong.find("relative_strength = [1.0, 1000.0]"), 33,
+                "relative_strength = [1.0, 999.0]");
+  EXPECT_THROW(build(wrong), InputError);
 }
 
 // A TIFF stack as the image: needs voxel_size (TIFF has no physical size), which a raw image

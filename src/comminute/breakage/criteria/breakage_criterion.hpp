@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "comminute/core/case_table.hpp"
 #include "comminute/core/registry.hpp"
@@ -66,6 +67,9 @@ class BreakageCriterion {
                                    fracture::E50bRule /*rule*/) const {
     return median_fracture_energy(d);
   }
+  // The relative strengths f_rel,k of the phases the criterion weighs by the particle's
+  // composition (composition_peak_force, tavares with relative_strength), or nullptr.
+  virtual const std::vector<double>* relative_strength() const { return nullptr; }
 };
 
 // A criterion's factory reads its own keys from the material's [materials.<m>.breakage] table;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "comminute/breakage/criteria/peak_force.hpp"
+#include "comminute/breakage/criteria/phase_weights.hpp"
 
 namespace comminute::breakage {
 
@@ -15,18 +16,19 @@ class CompositionPeakForce final : public PeakForce {
  public:
   CompositionPeakForce(const CriticalForceLaw& law, double factor_sigma,
                        std::vector<double> relative_strength)
-      : PeakForce(law, factor_sigma), relative_strength_(std::move(relative_strength)) {}
+      : PeakForce(law, factor_sigma), weights_(std::move(relative_strength)) {}
   std::string name() const override { return "composition_peak_force"; }
   void attach(ParticleStore& p) override;
-  const std::vector<double>& relative_strength() const { return relative_strength_; }
+  const std::vector<double>* relative_strength() const override {
+    return &weights_.relative_strength();
+  }
 
  protected:
   double critical_force(const ParticleStore& p, std::size_t i, double d) const override;
   double nominal_critical_force(double d) const override;
 
  private:
-  std::vector<double> relative_strength_;  // f_rel,k = sigma_k / sigma_ref per phase
-  std::vector<std::size_t> composition_;   // field indices
+  PhaseWeights weights_;  // f_rel,k = sigma_k / sigma_ref per phase
 };
 
 }  // namespace comminute::breakage

@@ -7,30 +7,38 @@
 namespace comminute::breakage {
 
 void Tavares::attach(ParticleStore& p) {
-  energy_ = p.add_field("tavares.fracture_energy", 0.0);  // J/kg, current (after damage)
-  damage_ = p.add_field("tavares.damage", 0.0);           // accumulated D = 1 - E/E_initial
+  // J/kg, current (after damage), before the phase weight w: the particle's E_eff is w E
+  energy_ = p.add_field("tavares.fracture_energy", 0.0);
+  damage_ = p.add_field("tavares.damage", 0.0);  // accumulated D = 1 - E/E_initial
+  p_.phases.attach(p);
+}
+
+fracture::FractureEnergyDistribution Tavares::scaled(double d, double w) const {
+  // This project's extension (docs/models.md eq. C2b): E50 and E_max (E_max/E50 fixed) times w.
+  return {p_.e50(d) * w, p_.sigma, p_.emax_ratio};
 }
 
 void Tavares::initialize(ParticleStore& p, std::size_t i, double d, Rng& rng) const {
-  p.field(energy_)[i] = distribution(d).quantile(rng.uniform());
+  // drawn at the default composition's scale of 1; the phase weight applies when it is read
+  p.field(energy_)[i] = p_.distribution(d).quantile(rng.uniform());
   p.field(damage_)[i] = 0.0;
 }
 
 bool Tavares::breaks(const ParticleStore& p, std::size_t i, double, const StressingEvent& e) const {
-  return e.specific_energy >= p.field(energy_)[i];
+  return e.specific_energy >= p.field(energy_)[i] * weight(p, i);  // E_eff = w E, eq. C2b
 }
 
 void Tavares::survive(ParticleStore& p, std::size_t i, double, const StressingEvent& e) const {
   if (e.specific_energy < p_.min_damage_energy) return;
   double& energy = p.field(energy_)[i];
-  const double d = p_.damage(e.specific_energy / energy);
+  const double d = p_.damage(e.specific_energy / (energy * weight(p, i)));
   energy *= 1.0 - d;  // E <- E(1 - D), Tavares & King (2002), docs/models.md eq. D2
   double& total = p.field(damage_)[i];
   total = 1.0 - (1.0 - total) * (1.0 - d);
 }
 
 double Tavares::strength(const ParticleStore& p, std::size_t i, double) const {
-  return p.field(energy_)[i];
+  return p.field(energy_)[i] * weight(p, i);
 }
 
 double Tavares::damage(const ParticleStore& p, std::size_t i) const {
@@ -49,6 +57,7 @@ std::unique_ptr<BreakageCriterion> make(const CaseTable& t, const Material& m) {
   static_cast<fracture::FractureEnergyModel&>(p) = fracture::read_fracture_energy_model(t);
   p.damage = fracture::read_damage_law(t);
   p.min_damage_energy = t.number("min_damage_energy", Limits::non_negative(), 0.0);
+  p.phases = read_phase_weights(t, false);  // optional: phase-weighted strength (eq. C2b)
   // E_inf measured as applied energy against a device (steel by default) or as absorbed energy.
   const std::string basis = t.choice("e_inf_basis", {"applied", "absorbed"}, "applied");
   if (basis == "applied") {

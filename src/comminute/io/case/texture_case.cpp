@@ -4,7 +4,6 @@
 
 #include "comminute/analysis/liberation_observer.hpp"
 #include "comminute/breakage/breakage_module.hpp"
-#include "comminute/breakage/criteria/composition_peak_force.hpp"
 #include "comminute/breakage/texture/texture_generator.hpp"
 #include "comminute/breakage/texture/tiff_stack.hpp"
 #include "comminute/core/error.hpp"
@@ -122,9 +121,8 @@ breakage::texture::TextureModule* add_texture(const CaseTable& root, DemCase& de
             : n;
     // The composition criterion weighs the phases of this texture: same count, same strengths.
     const auto* mb = breakage ? breakage->material(static_cast<std::size_t>(k)) : nullptr;
-    const auto* c =
-        mb ? dynamic_cast<const breakage::CompositionPeakForce*>(mb->criterion.get()) : nullptr;
-    if (c && c->relative_strength() != f_rel)
+    const auto* c = mb ? mb->criterion->relative_strength() : nullptr;
+    if (c && *c != f_rel)
       t->fail("phases", fmt::format("material '{}': the criterion's relative_strength must list "
                                     "the {} phases' relative_strength in order",
                                     name, n_phases));

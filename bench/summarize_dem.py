@@ -36,7 +36,7 @@ def med(key):
 
 print("| case | threads/ranks | comminute M p-steps/s | LIGGGHTS | LAMMPS | comminute / LIGGGHTS | comminute / LAMMPS | contacts at end (comminute / LIGGGHTS / LAMMPS) | peak RSS MB (comminute / LIGGGHTS / LAMMPS) |")
 print("|---|---|---|---|---|---|---|---|---|")
-for case in ("settle20k", "settle100k", "dense100k"):
+for case in ("settle20k", "settle100k", "dense100k", "drum20k"):
     for np_ in (1, 2):
         c, l, a = med((case, "comminute", np_)), med((case, "liggghts", np_)), med((case, "lammps", np_))
         if c is None:
@@ -49,7 +49,7 @@ for case in ("settle20k", "settle100k", "dense100k"):
         print(f"| {case} | {np_} | {f(c)} | {f(l)} | {f(a)} | {r(l)} | {r(a)} | "
               f"{last('comminute', 1)} / {last('liggghts', 1)} / {last('lammps', 1)} | "
               f"{last('comminute', 2)} / {last('liggghts', 2)} / {last('lammps', 2)} |")
-for case in ("settle20k", "settle100k", "dense100k"):
+for case in ("settle20k", "settle100k", "dense100k", "drum20k"):
     one, two = med((case, "comminute", 1)), med((case, "comminute", 2))
     if one and two:
         print(f"\ncomminute {case}: two threads / one thread = {two / one:.2f}")

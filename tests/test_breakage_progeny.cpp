@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "comminute/breakage/progeny/progeny_sizes.hpp"
+#include "comminute/core/error.hpp"
 #include "comminute/core/units.hpp"
 #include "comminute/fracture/progeny_distribution.hpp"
 #include "comminute/fracture/t10_model.hpp"
@@ -122,6 +123,15 @@ TEST(ProgenySizes, MinimumSizeAboveParentGivesAllFines) {
   const Progeny pr = draw_progeny(dist, 1e-6, 2700, 0.002, FinesRule::mass, rng);
   EXPECT_TRUE(pr.fragments.empty());
   EXPECT_EQ(pr.fines_mass, 1e-6);
+}
+
+// A state no run makes (a checkpoint whose radius was corrupted to 1e180 m: the density is 0 and
+// every fragment would weigh nothing) is refused with an Error instead of looping forever.
+TEST(ProgenySizes, ParticleOfZeroDensityIsRefused) {
+  T10Model m(illustrative());
+  Rng rng(1);
+  ProgenyDistribution dist(1e180, 20.0, m.tn(20.0));
+  EXPECT_THROW(draw_progeny(dist, 1e-6, 0.0, 2e179, FinesRule::mass, rng), Error);
 }
 
 // Issue 3, test 2: over many events at energy E, the mean t10 measured on the drawn fragments

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
+
+#include "comminute/core/error.hpp"
 #include "comminute/core/units.hpp"
 
 namespace comminute::breakage {
@@ -55,13 +58,25 @@ Progeny draw_progeny(const ProgenyDistribution& dist, double mass, double densit
                      FinesRule rule, Rng& rng) {
   const double d = dist.diameter();
   auto mass_of = [&](double x) { return density * units::pi / 6.0 * x * x * x; };
+  // A state no run produces (a corrupt checkpoint: a radius of 1e180 m) would make fragments of
+  // zero mass and never finish: refused.
+  if (!(mass > 0) || !(mass_of(d) > 0) || !std::isfinite(mass_of(d)))
+    throw Error(
+        fmt::format("breakage: cannot split a particle of diameter {} m, mass {} kg and "
+                    "minimum fragment size {} m",
+                    d, mass, min_size));
   std::vector<double> pieces;  // kg, resolved fragments
   double carry = 0;            // kg passed on to the next finer class
+  double used = 0;             // kg in `pieces`
   if (min_size < d) {
     const std::vector<double> b = class_boundaries(d, min_size);
     for (std::size_t c = 0; c + 1 < b.size(); ++c) {
       const double hi = b[c], lo = b[c + 1];
       double rest = mass * (dist.passing(hi) - dist.passing(lo)) / 100.0 + carry;
+      // A distribution outside [0, 100] % or not monotone (a corrupt state: t10 from a NaN or
+      // absurd energy) could ask for more mass than the parent has, and as many fragments: no
+      // class takes more than what is left (a valid distribution never comes near this bound).
+      if (rest > 1.000001 * (mass - used)) rest = mass - used;
       carry = 0;
       const double m_lo = mass_of(lo), m_hi = mass_of(hi);
       if (rest < m_lo) {
@@ -72,11 +87,13 @@ Progeny draw_progeny(const ProgenyDistribution& dist, double mass, double densit
       while (rest > 0) {
         if (rest <= m_hi) {
           pieces.push_back(rest);
+          used += rest;
           break;
         }
         const double m = mass_of(sampler.draw(rng));
         if (rest - m >= m_lo) {
           pieces.push_back(m);
+          used += m;
           rest -= m;
         } else {  // rest in (m_hi, m + m_lo): closes the class as equal halves, or as one
           // fragment when halves would fall below the class (a class narrower than 2^(1/3) in
@@ -87,6 +104,7 @@ Progeny draw_progeny(const ProgenyDistribution& dist, double mass, double densit
           } else {
             pieces.push_back(rest);  // at most 2 m_lo: size below 2^(1/3) lo
           }
+          used += rest;
           break;
         }
       }

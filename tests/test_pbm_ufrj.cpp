@@ -259,3 +259,29 @@ TEST(UfrjMill, VirginRateIsLinearInTheCollisionList) {
              sab = UfrjMill(g, 2700, ab).virgin_rates();
   for (std::size_t i = 1; i < 12; ++i) EXPECT_NEAR(sab[i], sa[i] + sb[i], 1e-12 * sab[i]) << i;
 }
+
+TEST(UfrjMill, WallSpectrumAddsItsCollisionsWithItsOwnCapture) {
+  // A media–liner spectrum B beside the media–media spectrum A: every term of the model (rate and
+  // the whole right-hand side of U3–U5) is a sum over collisions, so the mill with both equals
+  // the mill with A plus a mill whose only spectrum is B captured by the liner geometry.
+  // Round-off only (1e−12 relative; 1e−12 of the largest term for the derivative).
+  const auto g = SizeGrid::geometric(4e-3, std::sqrt(2.0), 12, GridCoordinate::size, kv);
+  auto both = params(5.0, 60), a = both, b = both;
+  both.spectrum = a.spectrum = {{1e-3, 1e-2}, {800.0, 200.0}};
+  both.wall_spectrum = {{5e-3, 5e-2}, {100.0, 40.0}};
+  b.spectrum = both.wall_spectrum;
+  b.capture = CaptureGeometry::ball_wall;
+  const UfrjMill mb(g, 2700, both), ma(g, 2700, a), mw(g, 2700, b);
+  ASSERT_EQ(mb.spectrum().energy.size(), 4u);
+  EXPECT_EQ(mb.captured_mass(7, 1), mw.captured_mass(7));
+  EXPECT_EQ(mb.captured_mass(7, 0), ma.captured_mass(7));
+  const auto sb = mb.virgin_rates(), sa = ma.virgin_rates(), sw = mw.virgin_rates();
+  for (std::size_t i = 1; i < 12; ++i) EXPECT_NEAR(sb[i], sa[i] + sw[i], 1e-12 * sb[i]) << i;
+  Eigen::VectorXd m0 = Eigen::VectorXd::Constant(12, 0.04);
+  const Eigen::VectorXd y = mb.initial_state(m0);
+  Eigen::VectorXd db, da, dw;
+  mb.derivative(0, y, db);
+  ma.derivative(0, y, da);
+  mw.derivative(0, y, dw);
+  EXPECT_LE((db - da - dw).cwiseAbs().maxCoeff(), 1e-12 * db.cwiseAbs().maxCoeff());
+}

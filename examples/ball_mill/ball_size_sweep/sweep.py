@@ -8,17 +8,21 @@ and ball-liner, in the format `comminute pbm` reads (energy_J, frequency_per_s).
                    (same mill, 30 % filling, 70 % critical speed; N = 490 (25 mm/d)^3 balls) and
                    takes output/collision_spectrum_ball-ball.csv and ..._ball-wall_mill.csv, or
   --spectra DIR    reads DIR/d<mm>/collision_spectrum_ball-ball.csv and
-                   DIR/d<mm>/collision_spectrum_ball-wall_mill.csv (e.g. a previous --dem run).
+                   DIR/d<mm>/collision_spectrum_ball-wall_mill.csv (or DIR/d<mm>/output/..., the
+                   folders of an earlier --dem run).
 
 Then for each ball size it runs `comminute pbm --no-plots` on the UFRJ case
 examples/pbm/ball_mill_ufrj.toml twice, with the ball-ball spectrum (capture = "ball_ball") and
 with the ball-liner spectrum (capture = "ball_wall"), and adds the two rates.csv columns: the
 virgin rate S_i = sum over collisions of lambda_k m*_i/H F_i(e_ik) is linear in the list of
-collisions (docs/pbm.md eq. U5), so the rate of the two contact types together is the sum.
+collisions (docs/models.md eq. U5), so the rate of the two contact types together is the sum.
 
-Writes OUT/ball_size_rates.csv (ball_diameter [m], class [-], size [m], rate_ball_ball [1/s],
-rate_ball_liner [1/s], rate [1/s]) and OUT/ball_size_sweep.png (rate vs size for each ball; rate
-vs ball size for a few particle sizes). Run from the repository root:
+A third run per ball size puts both spectra in one mill (wall_spectrum_file) and grinds the
+example's feed for 600 s. Writes OUT/ball_size_rates.csv (ball_diameter [m], class [-], size [m],
+rate_ball_ball [1/s], rate_ball_liner [1/s], rate [1/s] of the mill with both spectra),
+OUT/ball_size_product.csv (ball_diameter [m], time [s], size_upper [m], cumulative_mass [-]) and
+OUT/ball_size_sweep.png (rate vs size for each ball; rate vs ball size for a few particle sizes;
+product size distribution per ball size). Run from the repository root:
 
   /usr/bin/python3 examples/ball_mill/ball_size_sweep/sweep.py --dem --out sweep_out
 """
@@ -64,11 +68,13 @@ def dem_case(d):
     return text
 
 
-def pbm_case(spectrum, d, capture, out):
+def pbm_case(spectrum, d, capture, out, wall_spectrum=None):
     text = open(os.path.join(ROOT, "examples/pbm/ball_mill_ufrj.toml")).read()
-    text = sub(text, r"^spectrum_file = .*$", f'spectrum_file = "{spectrum}"')
+    extra = f'\nwall_spectrum_file = "{wall_spectrum}"' if wall_spectrum else ""
+    text = sub(text, r"^spectrum_file = .*$", f'spectrum_file = "{spectrum}"{extra}')
     text = sub(text, r"^ball_diameter = .*$", f'ball_diameter = {d!r}\ncapture = "{capture}"')
-    text = sub(text, r"^times = .*$", "times = [0, 60]")
+    if not wall_spectrum:
+        text = sub(text, r"^times = .*$", "times = [0, 60]")
     text = sub(text, r"^directory = .*$", f'directory = "{out}"')
     return text
 
@@ -84,7 +90,7 @@ def main():
     if not a.dem and not a.spectra:
         sys.exit("sweep.py: give --dem or --spectra DIR")
     out = os.path.abspath(a.out)
-    rows = []
+    rows, product = [], []
     for mm in [int(b) for b in a.balls.split(",")]:
         d = mm / 1000.0
         work = os.path.join(out, f"d{mm}")
@@ -97,6 +103,8 @@ def main():
             sdir = os.path.join(work, "output")
         else:
             sdir = os.path.join(os.path.abspath(a.spectra), f"d{mm}")
+            if not os.path.exists(os.path.join(sdir, "collision_spectrum_ball-ball.csv")):
+                sdir = os.path.join(sdir, "output")  # the folder of an earlier --dem run
         rates = {}
         for kind, spec, capture in (("ball_ball", "ball-ball", "ball_ball"),
                                     ("ball_liner", "ball-wall_mill", "ball_wall")):
@@ -106,10 +114,22 @@ def main():
             subprocess.run([a.comminute, "pbm", "--no-plots", case], check=True,
                            stdout=subprocess.DEVNULL)
             rates[kind] = read(os.path.join(work, f"ufrj_{kind}", "rates.csv"))
+        # both spectra in one mill: the product size distribution vs grinding time
+        case = os.path.join(work, "ufrj_both.toml")
+        open(case, "w").write(pbm_case(
+            os.path.join(sdir, "collision_spectrum_ball-ball.csv"), d, "ball_ball", "ufrj_both",
+            os.path.join(sdir, "collision_spectrum_ball-wall_mill.csv")))
+        subprocess.run([a.comminute, "pbm", "--no-plots", case], check=True,
+                       stdout=subprocess.DEVNULL)
+        dist = read(os.path.join(work, "ufrj_both", "distributions.csv"))
+        for k in range(len(dist["time [s]"])):
+            product.append((d, dist["time [s]"][k], dist["size_upper [m]"][k],
+                            dist["cumulative_mass [-]"][k]))
+        both = read(os.path.join(work, "ufrj_both", "rates.csv"))["rate [1/s]"]
         bb, bl = rates["ball_ball"], rates["ball_liner"]
         for i in range(len(bb["rate [1/s]"])):
             s1, s2 = bb["rate [1/s]"][i], bl["rate [1/s]"][i]
-            rows.append((d, int(bb["class [-]"][i]), bb["size [m]"][i], s1, s2, s1 + s2))
+            rows.append((d, int(bb["class [-]"][i]), bb["size [m]"][i], s1, s2, both[i]))
     with open(os.path.join(out, "ball_size_rates.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["ball_diameter [m]", "class [-]", "size [m]", "rate_ball_ball [1/s]",
@@ -117,10 +137,16 @@ def main():
         for r in rows:
             w.writerow([repr(v) if isinstance(v, float) else v for v in r])
     print(f"sweep: wrote {os.path.join(out, 'ball_size_rates.csv')}")
-    plot(rows, os.path.join(out, "ball_size_sweep.png"))
+    with open(os.path.join(out, "ball_size_product.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["ball_diameter [m]", "time [s]", "size_upper [m]", "cumulative_mass [-]"])
+        for r in product:
+            w.writerow([repr(v) for v in r])
+    print(f"sweep: wrote {os.path.join(out, 'ball_size_product.csv')}")
+    plot(rows, product, os.path.join(out, "ball_size_sweep.png"))
 
 
-def plot(rows, png):
+def plot(rows, product, png):
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -129,7 +155,7 @@ def plot(rows, png):
         print("sweep: matplotlib missing, no PNG (the CSV is complete)")
         return
     balls = sorted({r[0] for r in rows})
-    fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
+    fig, ax = plt.subplots(1, 3, figsize=(16, 4.2))
     for b in balls:
         pts = [(r[2], r[5]) for r in rows if r[0] == b and r[5] > 0]
         ax[0].loglog([p[0] * 1e3 for p in pts], [p[1] for p in pts], "o-", ms=3,
@@ -147,6 +173,16 @@ def plot(rows, png):
     ax[1].set_yscale("log")
     ax[1].set_title("rates vs ball size")
     ax[1].legend(title="particle size")
+    t_end = max(p[1] for p in product)
+    for b in balls:
+        pts = [(p[2], p[3]) for p in product if p[0] == b and p[1] == t_end]
+        ax[2].semilogx([q[0] * 1e3 for q in pts], [q[1] for q in pts], "-", label=f"{b * 1e3:.0f} mm")
+    feed = [(p[2], p[3]) for p in product if p[0] == balls[0] and p[1] == 0]
+    ax[2].semilogx([q[0] * 1e3 for q in feed], [q[1] for q in feed], "k--", label="feed")
+    ax[2].set_xlabel("size (mm)")
+    ax[2].set_ylabel("cumulative mass passing")
+    ax[2].set_title(f"product after {t_end:g} s (ball-ball + ball-liner)")
+    ax[2].legend(title="balls")
     fig.tight_layout()
     fig.savefig(png, dpi=120)
     print(f"sweep: wrote {png}")

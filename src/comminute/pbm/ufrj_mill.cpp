@@ -20,6 +20,14 @@ UfrjMill::UfrjMill(const SizeGrid& grid, double density, UfrjParameters p)
   if (!std::isfinite(p_.fracture.emax_ratio))
     throw Error("UfrjMill: the fracture-energy distribution must be truncated (finite Emax/E50)");
   // Bins of ln(E/E50) from 1e−4 E50 to the upper truncation E_max/E50 (eq. U4).
+  // Energy classes of both spectra in one list (U5 sums over every collision).
+  all_ = p_.spectrum;
+  source_.assign(all_.energy.size(), 0);
+  for (std::size_t k = 0; k < p_.wall_spectrum.energy.size(); ++k) {
+    all_.energy.push_back(p_.wall_spectrum.energy[k]);
+    all_.frequency.push_back(p_.wall_spectrum.frequency[k]);
+    source_.push_back(1);
+  }
   ln_lo_ = std::log(1e-4);
   ln_step_ = (std::log(p_.fracture.emax_ratio) - ln_lo_) / static_cast<double>(m_);
   auto edge = [&](std::size_t j) { return std::exp(ln_lo_ + ln_step_ * static_cast<double>(j)); };
@@ -33,16 +41,20 @@ UfrjMill::UfrjMill(const SizeGrid& grid, double density, UfrjParameters p)
     for (std::size_t j = 0; j < m_; ++j)  // the first bin also takes everything below it
       virgin_(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(i)) =
           dist_[i].cdf(edge(j + 1) * e50_[i]) - (j == 0 ? 0.0 : dist_[i].cdf(edge(j) * e50_[i]));
-    // Capture (docs/models.md eq. U1): N_cap = 1/4 + 3/4 (2 r_c/x)² for r_c ≥ x/2.
-    const double rc = p_.capture_radius > 0 ? p_.capture_radius
-                                            : nip_capture_radius(p_.capture, p_.ball_radius, x);
-    const double ncap = rc >= x / 2 ? 0.25 + 0.75 * std::pow(2 * rc / x, 2) : 1.0;
-    mstar_.push_back(density * grid.pivot_volume(i) * ncap);
+    // Capture (docs/models.md eq. U1): N_cap = 1/4 + 3/4 (2 r_c/x)² for r_c ≥ x/2, one m* per
+    // spectrum (media–media, and media–liner when a wall spectrum is given).
+    for (std::size_t src = 0; src < 2; ++src) {
+      const CaptureGeometry geometry = src == 0 ? p_.capture : p_.wall_capture;
+      const double rc = p_.capture_radius > 0 ? p_.capture_radius
+                                              : nip_capture_radius(geometry, p_.ball_radius, x);
+      const double ncap = rc >= x / 2 ? 0.25 + 0.75 * std::pow(2 * rc / x, 2) : 1.0;
+      mstar_[src].push_back(density * grid.pivot_volume(i) * ncap);
+    }
     if (i == 0) continue;  // the finest class is the sink
     const double y = grid.pivot_volume(i);
-    for (std::size_t k = 0; k < p_.spectrum.energy.size(); ++k) {
+    for (std::size_t k = 0; k < all_.energy.size(); ++k) {
       Stress s;
-      s.capture_rate = p_.spectrum.frequency[k] * mstar_[i] / p_.holdup;
+      s.capture_rate = all_.frequency[k] * mstar_[source_[k]][i] / p_.holdup;
       const double e = specific_energy(i, k);
       const double r = e / e50_[i];
       for (std::size_t j = 0; j < m_; ++j) {
@@ -76,7 +88,7 @@ UfrjMill::UfrjMill(const SizeGrid& grid, double density, UfrjParameters p)
 // docs/models.md eq. U2, e_ik = η E_k / m*_i: the powder's share split equally among the captured
 // particles.
 double UfrjMill::specific_energy(std::size_t i, std::size_t k) const {
-  return p_.energy_share * p_.spectrum.energy[k] / mstar_[i];
+  return p_.energy_share * all_.energy[k] / mstar_[source_[k]][i];
 }
 
 ProgenyFractions UfrjMill::progeny(std::size_t i, std::size_t k) const {
@@ -178,14 +190,16 @@ std::vector<double> UfrjMill::virgin_rates() const {
 }
 
 namespace {
-// The [mill] table: spectrum_file, holdup, energy_share, capture_radius or ball_diameter (with
-// capture = "approximate" | "ball_ball" | "ball_wall"),
-// damage_gamma, damage_form, energy_bins, [mill.fracture_energy]
+// The [mill] table: spectrum_file (and wall_spectrum_file, with wall_capture), holdup,
+// energy_share, capture_radius or ball_diameter (with capture = "approximate" | "ball_ball" |
+// "ball_wall"), damage_gamma, damage_form, energy_bins, [mill.fracture_energy]
 // (fracture::read_fracture_energy_model, plus sigma_sizes/sigma_values for σ(d)) and [mill.progeny]
 // (fracture::read_t10_model, fracture::read_e50b_rule).
 std::unique_ptr<MillModel> make(const CaseTable& t, const ModelContext& ctx) {
   UfrjParameters u;
   u.spectrum = read_collision_spectrum(t, "spectrum_file");
+  if (t.has("wall_spectrum_file"))
+    u.wall_spectrum = read_collision_spectrum(t, "wall_spectrum_file");
   u.holdup = t.number("holdup", Limits::positive());
   u.energy_share = t.number("energy_share", {0, 1, true, false}, 1.0);
   if (t.has("capture_radius")) {
@@ -196,6 +210,10 @@ std::unique_ptr<MillModel> make(const CaseTable& t, const ModelContext& ctx) {
         t.choice("capture", {"approximate", "ball_ball", "ball_wall"}, "approximate");
     if (g == "ball_ball") u.capture = CaptureGeometry::ball_ball;
     if (g == "ball_wall") u.capture = CaptureGeometry::ball_wall;
+    const std::string w =
+        t.choice("wall_capture", {"approximate", "ball_ball", "ball_wall"}, "ball_wall");
+    if (w == "approximate") u.wall_capture = CaptureGeometry::approximate;
+    if (w == "ball_ball") u.wall_capture = CaptureGeometry::ball_ball;
   }
   const CaseTable fe = t.table("fracture_energy");
   u.fracture = fracture::read_fracture_energy_model(fe);

@@ -19,7 +19,9 @@
 //    virgin distribution (eq. U4); σ may be given per size (a table, interpolated in ln d:
 //    no published σ(d) law was retrieved). The whole binned distribution per class is
 //    reported (fracture_energy_distribution), not only its median.
-// Captured fraction of class i per second: λ_k m*_i/H (eq. U5). The finest class does not break.
+// Captured fraction of class i per second: λ_k m*_i/H (eq. U5), over the energy classes of the
+// media–media spectrum and, when given, of the media–liner one (its own capture geometry).
+// The finest class does not break.
 // Registered as the mill model "ufrj" ([solver] method = "ufrj", keys in [mill]).
 #include <Eigen/Dense>
 #include <utility>
@@ -42,6 +44,10 @@ struct UfrjParameters {
   double ball_radius = 0;     // m: r_c from the nip geometry when capture_radius is 0
   double capture_radius = 0;  // m
   CaptureGeometry capture = CaptureGeometry::approximate;  // nip geometry (capture_radius.hpp)
+  // Optional second spectrum, media–liner impacts, captured with its own nip geometry; its
+  // collisions add to those of `spectrum` (eq. U5 is a sum over collisions).
+  CollisionSpectrum wall_spectrum;
+  CaptureGeometry wall_capture = CaptureGeometry::ball_wall;
   fracture::FractureEnergyModel fracture;  // emax_ratio must be finite (the bins end there)
   fracture::DamageLaw damage;              // γ and form of the damage law (eq. D1)
   fracture::T10Parameters progeny;
@@ -71,11 +77,13 @@ class UfrjMill : public MillModel {
   double sigma_at(double x) const;
   // Breakage rate of virgin material, Σ_k (λ_k m*_i/H) F_i(e_ik) (1/s).
   std::vector<double> virgin_rates() const override;
-  double captured_mass(std::size_t i) const { return mstar_[i]; }
-  // Specific energy e_ik (J/kg) and the t10 progeny of class i stressed by energy class k.
+  // m*_i of a media–media collision (source 0) or a media–liner one (source 1).
+  double captured_mass(std::size_t i, std::size_t source = 0) const { return mstar_[source][i]; }
+  // Specific energy e_ik (J/kg) and the t10 progeny of class i stressed by energy class k; k runs
+  // over `spectrum` and then `wall_spectrum` (the order of spectrum()).
   double specific_energy(std::size_t i, std::size_t k) const;
   ProgenyFractions progeny(std::size_t i, std::size_t k) const override;
-  const CollisionSpectrum& spectrum() const override { return p_.spectrum; }
+  const CollisionSpectrum& spectrum() const override { return all_; }
 
  private:
   struct Stress {                 // one (class, energy class) pair
@@ -87,8 +95,11 @@ class UfrjMill : public MillModel {
   };
   std::size_t n_, m_;
   double ln_lo_, ln_step_;  // bins in ln(E/E50): edges ln_lo + j·step
-  std::vector<double> e50_, mstar_, size_;
-  Eigen::MatrixXd virgin_;  // (m_ × n_) virgin bin fractions per class
+  std::vector<double> e50_, size_;
+  std::vector<double> mstar_[2];     // captured mass per class, per source
+  CollisionSpectrum all_;            // both spectra, media–media first
+  std::vector<std::size_t> source_;  // source of each energy class of all_
+  Eigen::MatrixXd virgin_;           // (m_ × n_) virgin bin fractions per class
   std::vector<fracture::FractureEnergyDistribution> dist_;  // virgin distribution per class
   std::vector<std::vector<Stress>> stress_;                 // [class][energy class]
   UfrjParameters p_;

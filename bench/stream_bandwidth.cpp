@@ -6,7 +6,10 @@
 // read of the destination, which plain stores also cause, is not counted). Each array is first
 // touched by the thread that later streams it (static schedule), the first repeat is dropped, and
 // the best of the rest is reported with the median. One line per thread count and kernel:
-//   stream threads=T kernel=K bytes=B best_s=.. best_GBps=.. median_GBps=..
+//   stream threads=T kernel=K bytes=B best_s=.. best_GBps=.. median_GBps=.. cpu_GBps=..
+// cpu_GBps divides by the process CPU time per thread instead of the wall time (best repeat): on a
+// machine shared with other work, whose time slices stretch the wall time, it estimates what the
+// memory delivers while the kernel runs.
 // bench/roofline.sh runs it as the bandwidth ceiling of the roofline statement in bench/RESULTS.md.
 #include <fmt/format.h>
 #include <omp.h>
@@ -14,6 +17,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <ctime>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,6 +32,12 @@ struct Array {
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
 }  // namespace
@@ -62,9 +72,10 @@ int main(int argc, char** argv) {
       c[i] = 0.0;
     }
     for (int kk = 0; kk < 4; ++kk) {
-      std::vector<double> t(static_cast<std::size_t>(repeats));
+      std::vector<double> t(static_cast<std::size_t>(repeats)), cpu(t.size());
       for (int r = 0; r < repeats; ++r) {
         const auto t0 = std::chrono::steady_clock::now();
+        const double c0 = process_cpu_seconds();
         switch (kk) {
           case 0:
 #pragma omp parallel for schedule(static) num_threads(nt)
@@ -84,15 +95,19 @@ int main(int argc, char** argv) {
             break;
         }
         t[static_cast<std::size_t>(r)] = seconds_since(t0);
+        cpu[static_cast<std::size_t>(r)] = (process_cpu_seconds() - c0) / nt;
       }
       t.erase(t.begin());  // the first repeat pays for page faults and cold TLBs
+      cpu.erase(cpu.begin());
       std::sort(t.begin(), t.end());
+      const double cpu_best = *std::min_element(cpu.begin(), cpu.end());
       const double bytes = kernels[kk].words * 8.0 * static_cast<double>(n);
       const double best = t.front(), median = t[t.size() / 2];
       fmt::print(
           "stream threads={} kernel={} bytes={:.0f} best_s={:.5f} best_GBps={:.2f} "
-          "median_GBps={:.2f}\n",
-          nt, kernels[kk].name, bytes, best, bytes / best * 1e-9, bytes / median * 1e-9);
+          "median_GBps={:.2f} cpu_GBps={:.2f}\n",
+          nt, kernels[kk].name, bytes, best, bytes / best * 1e-9, bytes / median * 1e-9,
+          bytes / cpu_best * 1e-9);
     }
     check += a[n / 2] + b[n / 3] + c[n - 1];
   }

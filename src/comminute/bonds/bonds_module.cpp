@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "comminute/core/error.hpp"
+#include "comminute/engine/contact_stress.hpp"
 #include "comminute/engine/simulation.hpp"
 
 namespace comminute::bonds {
@@ -96,6 +97,10 @@ void BondsModule::apply(Simulation& sim) {
     fail(sim, b, FailureCause::particle_removed, k != BondList::none ? p.x[k] : Vec3{});
   }
   double elastic = 0;
+  // a statistics module measuring this step's Love–Weber stress counts the bonds' forces too: a
+  // bond transmits force between its particles like a contact, at its contact point
+  ContactStress* stress = sim.contacts().stress();
+  if (stress && !stress->armed()) stress = nullptr;
   for (std::size_t b = 0; b < bonds_.size(); ++b) {
     if (gone_[b]) continue;
     const std::uint32_t i = bonds_.slot_i[b], j = bonds_.slot_j[b];
@@ -123,6 +128,10 @@ void BondsModule::apply(Simulation& sim) {
     p.f[i] -= load.force;
     p.t[j] += cross(xc - p.x[j], load.force) + load.moment;
     p.t[i] -= cross(xc - p.x[i], load.force) + load.moment;
+    if (stress) {  // the moment load.moment is a couple: no part in the symmetric stress
+      stress->add(j, load.force, xc - p.x[j]);
+      stress->add(i, -load.force, xc - p.x[i]);
+    }
     elastic += s.strain_energy;
   }
   sim.ledger.bond_elastic = elastic;

@@ -60,6 +60,7 @@ void BondsModule::create_bonds(Simulation& sim) {
     found.emplace_back(p.id[i], p.id[j], i, j);
   }
   std::sort(found.begin(), found.end());
+  bonds_.reserve(bonds_.size() + found.size());  // made once: no spare capacity
   for (const auto& [a, b, i, j] : found) {
     const Vec3 d = p.x[j] - p.x[i];
     const double length = norm(d);

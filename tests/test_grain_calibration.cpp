@@ -10,10 +10,10 @@
 #include <fstream>
 #include <numbers>
 
+#include "case_docs_check.hpp"
 #include "comminute/calibrate/multistart.hpp"
 #include "comminute/core/error.hpp"
 #include "comminute/io/case/grain_compression_case.hpp"
-#include "case_docs_check.hpp"
 #include "source_file.hpp"
 #include "temp_dir.hpp"
 

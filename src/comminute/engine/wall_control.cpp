@@ -52,7 +52,9 @@ void WallControlModule::post_force(Simulation& sim) {
     double v_next = 0;
     if (s.mode == WallControlSpec::Mode::servo) {
       // Thornton, Géotechnique 50 (2000) 43, servo walls (as PFC): v = G (F_target − F), eq. W1
-      v_next = std::clamp(s.gain * (s.target_force - force(sim, k)), -s.max_speed, s.max_speed);
+      // the pre-load until the hold ends, then the target
+      const double target = sim.time < s.preload_time ? s.preload_force : s.target_force;
+      v_next = std::clamp(s.gain * (target - force(sim, k)), -s.max_speed, s.max_speed);
     } else {
       // Newton's second law along n, m dv/dt = m g·n + F·n, leapfrog: docs/models.md eq. W2
       const double a = dot(sim.gravity, s.direction) + dot(w.force, s.direction) / s.mass;

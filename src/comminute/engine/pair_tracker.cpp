@@ -63,16 +63,23 @@ void PairTracker::rebuild(ParticleStore& p, const Walls& walls, SimulationOption
   ++rebuilds_;
 }
 
-void PairTracker::add_wall_candidates(const ParticleStore& p, const Walls& walls, std::uint32_t i,
+bool PairTracker::add_wall_candidates(const ParticleStore& p, const Walls& walls, std::uint32_t i,
                                       std::uint32_t w, const Vec3& x, double r, double skin,
+                                      std::vector<std::uint32_t>& elements,
                                       std::vector<WallContact>& found,
                                       std::vector<WallContactRecord>& into) const {
   found.clear();
-  const bool near = walls[w]->contacts(x, r, skin, found) > 0;
-  if (!near && !wall_full_scan_[w]) return;
+  elements.clear();
+  // a wall with elements lists those within the skin (kept for the force loop's look-ups) and
+  // finds the candidate features among them
+  const bool listed = walls[w]->near_elements(x, r, skin, elements);
+  const bool near = (listed ? walls[w]->contacts_among(x, r, skin, elements, found)
+                            : walls[w]->contacts(x, r, skin, found)) > 0;
+  if (!near && !wall_full_scan_[w]) return listed;
   // one candidate per (particle, wall, feature); a full-scan wall keeps one per particle
   if (found.empty()) found.push_back({{}, {}, -1, 0});
   for (const auto& c : found) into.push_back({i, w, c.feature, NeighborList::none, p.id[i]});
+  return listed;
 }
 
 void PairTracker::build_wall_candidates(const ParticleStore& p, const Walls& walls, double skin,
@@ -92,11 +99,16 @@ void PairTracker::build_wall_candidates(const ParticleStore& p, const Walls& wal
   wall_full_scan_.assign(walls.size(), 0);
   wall_travel_.assign(walls.size(), 0.0);
   std::vector<WallContact> found;
+  std::vector<std::uint32_t> elements;
+  wall_elements_.clear(walls.size());
   for (std::uint32_t w = 0; w < walls.size(); ++w) {
     wall_full_scan_[w] = walls[w]->full_scan();
     for (std::uint32_t i = 0; i < p.owned(); ++i) {  // ghosts: their owners meet the walls
       const std::size_t from = fresh.size();
-      add_wall_candidates(p, walls, i, w, p.x[i], p.radius[i], skin, found, fresh);
+      const bool listed =
+          add_wall_candidates(p, walls, i, w, p.x[i], p.radius[i], skin, elements, found, fresh);
+      if (i == 0 && listed) wall_elements_.start(w);
+      if (wall_elements_.on(w)) wall_elements_.append(w, elements);
       for (std::size_t k = from; k < fresh.size(); ++k) {
         WallContactRecord& r = fresh[k];
         auto it = std::lower_bound(old.begin(), old.end(), r, key_less);
@@ -162,10 +174,15 @@ bool PairTracker::replace(const ParticleStore& p, const Walls& walls, double ski
     state_from.push_back(static_cast<std::uint32_t>(q));
   }
   std::vector<WallContact> found;
+  std::vector<std::uint32_t> elements;
+  WallElementLists lists = wall_elements_.remapped(to_new, n_kept, NeighborList::none);
   for (std::size_t s = n_kept; s < p.size(); ++s)
-    for (std::uint32_t w = 0; w < walls.size(); ++w)
+    for (std::uint32_t w = 0; w < walls.size(); ++w) {
       add_wall_candidates(p, walls, static_cast<std::uint32_t>(s), w, x_at_build_[s],
-                          r_at_build_[s], skin, found, kept);
+                          r_at_build_[s], skin, elements, found, kept);
+      if (lists.on(w)) lists.append(w, elements);
+    }
+  wall_elements_ = std::move(lists);
   state_from.resize(kept.size(), NeighborList::none);
   wall_candidates_.swap(kept);
   wall_state.gather(state_from);
@@ -269,6 +286,7 @@ void PairTracker::load(const Archive& a, const ParticleStore& p, double skin,
   reach_tracked_ = std::move(tracked);
   if (x_at_build_.size() == p.size()) nlist_.rebuild_index(x_at_build_, r_at_build_, skin);
   wall_candidates_ = std::move(candidates);
+  wall_elements_.clear(n_walls);
   wall_travel_ = std::move(travel);
   wall_full_scan_ = std::move(full_scan);
   rebuilds_ = a.get_value<std::uint64_t>("sim/rebuilds");

@@ -11,6 +11,7 @@
 #include "comminute/contact/contact_state.hpp"
 #include "comminute/core/archive.hpp"
 #include "comminute/engine/wall_contact.hpp"
+#include "comminute/engine/wall_element_lists.hpp"
 #include "comminute/geometry/wall.hpp"
 #include "comminute/neighbor/neighbor_list.hpp"
 #include "comminute/particles/particle_store.hpp"
@@ -67,6 +68,8 @@ class PairTracker {
   const NeighborList& pairs() const { return nlist_; }
   NeighborList& pairs() { return nlist_; }
   const std::vector<WallContactRecord>& wall_candidates() const { return wall_candidates_; }
+  // Per wall and particle, the elements within the skin at the last candidate search.
+  const WallElementLists& wall_elements() const { return wall_elements_; }
   // Before a rebuild: calls f(record, index) on each touching wall contact, which may change its
   // feature key (periodic wraps); the rebuild then carries the contact under its new key.
   template <class F>
@@ -87,16 +90,19 @@ class PairTracker {
                const std::vector<std::uint64_t>* labels);
   void build_wall_candidates(const ParticleStore& p, const Walls& walls, double skin,
                              ContactStateStore& wall_state);
-  void add_wall_candidates(const ParticleStore& p, const Walls& walls, std::uint32_t i,
+  // Appends particle i's candidates on wall w; true when the wall listed its elements within the
+  // skin in `elements`.
+  bool add_wall_candidates(const ParticleStore& p, const Walls& walls, std::uint32_t i,
                            std::uint32_t w, const Vec3& x, double r, double skin,
-                           std::vector<WallContact>& found,
+                           std::vector<std::uint32_t>& elements, std::vector<WallContact>& found,
                            std::vector<WallContactRecord>& into) const;
   double reach_change(const ParticleStore& p, std::size_t i) const;  // |x - x_b| + r - r_b
 
   NeighborList nlist_;
   std::vector<WallContactRecord> wall_candidates_;  // near walls at the last build
-  std::vector<std::uint8_t> wall_full_scan_;        // per wall: surface moves, check every step
-  std::vector<double> wall_travel_;                 // per wall: distance moved since the build
+  WallElementLists wall_elements_;  // (not checkpointed: the look-ups search until the next build)
+  std::vector<std::uint8_t> wall_full_scan_;  // per wall: surface moves, check every step
+  std::vector<double> wall_travel_;           // per wall: distance moved since the build
   // Reach at the last build: a particle's pairs cover every sphere within skin of the sphere
   // (x_at_build_, r_at_build_); fragments appended in place get theirs at insertion.
   std::vector<Vec3> x_at_build_;

@@ -154,8 +154,9 @@ void Simulation::compute_forces() {
   if (stress) stress->begin(particles.size());
   pair_loop_.run(particles, materials, tracker_.pairs(), contacts_, pair_state_, dt, ledger,
                  elastic_energy_, ended_contacts_);
-  wall_loop_.run(particles, materials, walls, tracker_.wall_candidates(), contacts_, wall_state_,
-                 dt, ledger, elastic_energy_, wall_contacts_, ended_contacts_);
+  wall_loop_.run(particles, materials, walls, tracker_.wall_candidates(), tracker_.wall_elements(),
+                 contacts_, wall_state_, dt, ledger, elastic_energy_, wall_contacts_,
+                 ended_contacts_);
   if (ghosts_.active()) ghosts_.fold(particles);
   if (stress && ghosts_.active())
     stress->fold(particles.owned(), particles.ghost_owner, [this](std::size_t g, const Vec3& v) {

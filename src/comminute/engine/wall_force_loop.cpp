@@ -10,8 +10,8 @@ namespace comminute {
 void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
                         const std::vector<std::unique_ptr<Wall>>& walls,
                         const std::vector<WallContactRecord>& candidates,
-                        const ContactPipeline& pipeline, ContactStateStore& state, double dt,
-                        EnergyLedger& ledger, double& elastic,
+                        const WallElementLists& elements, const ContactPipeline& pipeline,
+                        ContactStateStore& state, double dt, EnergyLedger& ledger, double& elastic,
                         std::vector<WallContactRecord>& touching,
                         std::vector<EndedContact>& ended) {
   const std::size_t nc = candidates.size();
@@ -116,7 +116,12 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
         const WallContactRecord& c = candidates[k];
         if (k == q || c.wall != candidates[k - 1].wall) {  // one look-up per wall (a mesh may
           found.clear();                                   // list many features)
-          walls[c.wall]->contacts(p.x[c.particle], p.radius[c.particle], 0.0, found);
+          const Wall& w = *walls[c.wall];
+          const auto listed = elements.find(c.wall, c.particle);
+          if (listed)
+            w.contacts_among(p.x[c.particle], p.radius[c.particle], 0.0, *listed, found);
+          else
+            w.contacts(p.x[c.particle], p.radius[c.particle], 0.0, found);
         }
         for (const auto& f : found)  // a full-scan wall's candidate (feature < 0) takes any
           if (f.feature == c.feature || c.feature < 0) hits[k - q] = f;

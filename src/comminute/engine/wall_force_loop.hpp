@@ -13,6 +13,7 @@
 #include "comminute/engine/ended_contact.hpp"
 #include "comminute/engine/energy_tally.hpp"
 #include "comminute/engine/wall_contact.hpp"
+#include "comminute/engine/wall_element_lists.hpp"
 #include "comminute/geometry/wall.hpp"
 #include "comminute/particles/material.hpp"
 #include "comminute/particles/particle_store.hpp"
@@ -25,11 +26,14 @@ class WallForceLoop {
   // updates `state`, books the dissipation and the walls' work in `ledger`, adds the elastic
   // energy to `elastic` (J), and lists the touching contacts in `touching`. When the pipeline
   // keeps the collision record, appends the contacts that ended to `ended`, in candidate order.
+  // A particle's contacts on a wall are looked up among its listed elements where `elements`
+  // has a list for it (the same result), else by the wall's own search.
   void run(ParticleStore& p, const MaterialTable& materials,
            const std::vector<std::unique_ptr<Wall>>& walls,
-           const std::vector<WallContactRecord>& candidates, const ContactPipeline& pipeline,
-           ContactStateStore& state, double dt, EnergyLedger& ledger, double& elastic,
-           std::vector<WallContactRecord>& touching, std::vector<EndedContact>& ended);
+           const std::vector<WallContactRecord>& candidates, const WallElementLists& elements,
+           const ContactPipeline& pipeline, ContactStateStore& state, double dt,
+           EnergyLedger& ledger, double& elastic, std::vector<WallContactRecord>& touching,
+           std::vector<EndedContact>& ended);
 };
 
 }  // namespace comminute

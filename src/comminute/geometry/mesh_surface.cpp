@@ -18,6 +18,9 @@ std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t a) {
 
 // Normals this close are one plane (cos of about 1.4e-6 rad).
 constexpr double kCoplanar = 1 - 1e-12;
+// Relative slack of the plane-distance reject and of the candidate-triangle lists: far above the
+// round-off of a distance (1e-16 relative), far below any skin.
+constexpr double kReachSlack = 1e-9;
 
 }  // namespace
 
@@ -112,24 +115,51 @@ MeshSurface::Closest MeshSurface::closest(std::uint32_t t, const Vec3& p) const 
   return {b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))), edge, 1};
 }
 
+void MeshSurface::gather(const Vec3& x, double reach, std::vector<std::uint32_t>& near) const {
+  const Vec3 d{reach, reach, reach};
+  bins_.query(x - d, x + d, near);
+  std::sort(near.begin(), near.end());
+  near.erase(std::unique(near.begin(), near.end()), near.end());
+}
+
+bool MeshSurface::beyond(std::uint32_t t, const Vec3& x, double reach) const {
+  // the distance to the plane bounds the distance to the triangle from below; the relative slack
+  // keeps every triangle whose computed distance (closest()) could round below `reach`
+  return std::abs(dot(x - v_[tri_[t][0]], normal_[t])) >= reach * (1 + kReachSlack);
+}
+
+void MeshSurface::near_triangles(const Vec3& x, double reach,
+                                 std::vector<std::uint32_t>& out) const {
+  thread_local std::vector<std::uint32_t> near;
+  near.clear();
+  gather(x, reach, near);
+  for (std::uint32_t t : near)
+    if (!beyond(t, x, reach) && norm(x - closest(t, x).point) < reach * (1 + kReachSlack))
+      out.push_back(t);
+}
+
 void MeshSurface::contacts(const Vec3& x, double r, double margin,
                            std::vector<WallContact>& out) const {
   thread_local std::vector<std::uint32_t> near;
+  near.clear();
+  gather(x, r + margin, near);
+  contacts_among(x, r, margin, near, out);
+}
+
+void MeshSurface::contacts_among(const Vec3& x, double r, double margin,
+                                 std::span<const std::uint32_t> near,
+                                 std::vector<WallContact>& out) const {
   struct Hit {
     WallContact contact;
     Region region;
     std::uint32_t id;  // patch, edge or vertex
   };
   thread_local std::vector<Hit> hits;
-  near.clear();
   hits.clear();
   const double reach = r + margin;
-  const Vec3 d{reach, reach, reach};
-  bins_.query(x - d, x + d, near);
-  std::sort(near.begin(), near.end());
-  near.erase(std::unique(near.begin(), near.end()), near.end());
   const bool candidates = margin > 0;
   for (std::uint32_t t : near) {
+    if (beyond(t, x, reach)) continue;
     const Closest q = closest(t, x);
     if (candidates) {
       // every feature of a triangle within reach that lies within reach itself: the face, and

@@ -17,6 +17,7 @@
 // contacts patches + edge, vertex contacts patches + edges + vertex.
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "comminute/geometry/triangle_bins.hpp"
@@ -36,6 +37,12 @@ class MeshSurface {
   // triangle within reach and every edge and corner within reach, but those inside a planar
   // patch, which never are (their overlaps are those of the distances to each feature).
   void contacts(const Vec3& x, double r, double margin, std::vector<WallContact>& out) const;
+  // The same among the triangles `near` (ascending) only: exact when they hold every triangle
+  // closer to x than r + margin.
+  void contacts_among(const Vec3& x, double r, double margin, std::span<const std::uint32_t> near,
+                      std::vector<WallContact>& out) const;
+  // Appends, ascending, the triangles closer to x than `reach` (with a relative slack of 1e-9).
+  void near_triangles(const Vec3& x, double reach, std::vector<std::uint32_t>& out) const;
   // True when a contact can pass from feature a to feature b as a sphere moves over the surface
   // (the same feature, or features that touch: a patch and its edges, corners and neighbouring
   // patches; an edge and its corners and the edges sharing one).
@@ -57,6 +64,10 @@ class MeshSurface {
     int local = 0;  // which edge (0: v0-v1, 1: v1-v2, 2: v2-v0) or corner
   };
   Closest closest(std::uint32_t t, const Vec3& x) const;
+  // The triangles in the bins around the box of half-width reach about x, ascending, once each.
+  void gather(const Vec3& x, double reach, std::vector<std::uint32_t>& near) const;
+  // True when triangle t's plane is at least reach from x: it cannot be within reach.
+  bool beyond(std::uint32_t t, const Vec3& x, double reach) const;
   bool patch_has_vertex(std::uint32_t patch, std::uint32_t v) const;
 
   std::vector<Vec3> v_;

@@ -37,6 +37,24 @@ int MeshWall::contacts(const Vec3& x, double r, double margin,
                        std::vector<WallContact>& out) const {
   const std::size_t first = out.size();
   mesh_.contacts(to_body(x), r, margin, out);
+  return to_world(out, first);
+}
+
+int MeshWall::contacts_among(const Vec3& x, double r, double margin,
+                             std::span<const std::uint32_t> elements,
+                             std::vector<WallContact>& out) const {
+  const std::size_t first = out.size();
+  mesh_.contacts_among(to_body(x), r, margin, elements, out);
+  return to_world(out, first);
+}
+
+bool MeshWall::near_elements(const Vec3& x, double r, double margin,
+                             std::vector<std::uint32_t>& out) const {
+  mesh_.near_triangles(to_body(x), r + margin, out);
+  return true;
+}
+
+int MeshWall::to_world(std::vector<WallContact>& out, std::size_t first) const {
   for (std::size_t k = first; k < out.size(); ++k) {
     out[k].normal = rotate_to_world(out[k].normal);
     out[k].point = to_world(out[k].point);

@@ -26,6 +26,11 @@ class MeshWall : public Wall {
   std::string type() const override { return "mesh"; }
   int contacts(const Vec3& x, double r, double margin,
                std::vector<WallContact>& out) const override;
+  bool near_elements(const Vec3& x, double r, double margin,
+                     std::vector<std::uint32_t>& out) const override;
+  int contacts_among(const Vec3& x, double r, double margin,
+                     std::span<const std::uint32_t> elements,
+                     std::vector<WallContact>& out) const override;
   void advance(double dt) override;
   SurfaceMesh surface(double extent) const override;
   bool surface_moves() const override { return kinematics.moving() || motion_ != nullptr; }
@@ -46,6 +51,8 @@ class MeshWall : public Wall {
  private:
   Vec3 to_body(const Vec3& world) const;
   Vec3 rotate_to_world(const Vec3& body) const;
+  // Brings contacts out[first, end) from the body frame to the world; returns their count.
+  int to_world(std::vector<WallContact>& out, std::size_t first) const;
 
   MeshSurface mesh_;
   std::unique_ptr<MotionModel> motion_;

@@ -7,6 +7,7 @@
 // common to all walls (name, material, motion) are read by the case builder.
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,20 @@ class Wall {
   // Appends the features of this wall closer to sphere (x, r) than r + margin. Returns the count.
   virtual int contacts(const Vec3& x, double r, double margin,
                        std::vector<WallContact>& out) const = 0;
+  // Candidate elements (the triangles of a mesh wall): appends, ascending, the elements closer to
+  // sphere (x, r) than r + margin and returns true; a wall without elements returns false.
+  virtual bool near_elements(const Vec3& /*x*/, double /*r*/, double /*margin*/,
+                             std::vector<std::uint32_t>& /*out*/) const {
+    return false;
+  }
+  // contacts(x, r, margin, out) looked up among `elements` only. Exact when they hold every
+  // element closer than r + margin: a near_elements list taken with margin m covers every later
+  // look-up with margin 0 while the sphere's reach grew and the wall travelled less than m in all.
+  virtual int contacts_among(const Vec3& x, double r, double margin,
+                             std::span<const std::uint32_t> /*elements*/,
+                             std::vector<WallContact>& out) const {
+    return contacts(x, r, margin, out);
+  }
   // Moves the geometry rigidly over dt with the current kinematics.
   virtual void advance(double dt) = 0;
   // Triangulated surface for output; `extent` (m) bounds infinite walls.

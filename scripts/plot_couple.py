@@ -35,6 +35,16 @@ def numbers(col):
     return [float(v) for v in col]
 
 
+def save(fig, ax, xlabel, ylabel, title, path):
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
 def window(couple_dir):
     path = os.path.join(couple_dir, "couple.csv")
     if not os.path.exists(path):
@@ -93,13 +103,9 @@ def plot_spectra(couple_dir, dem_dir):
         pts = [(a, b) for a, b in zip(e, cum) if b > 0]
         if pts:
             ax.loglog([p[0] for p in pts], [p[1] for p in pts], label=name)
-    ax.set_xlabel("collision energy E (J)")
-    ax.set_ylabel("collisions per second with energy ≥ E (1/s)")
-    ax.set_title("collision spectra by contact type (steady-state window)")
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(couple_dir, "spectra.png"), dpi=120)
-    plt.close(fig)
+    save(fig, ax, "collision energy E (J)", "collisions per second with energy ≥ E (1/s)",
+         "collision spectra by contact type (steady-state window)",
+         os.path.join(couple_dir, "spectra.png"))
 
 
 def plot_stress_map(couple_dir, dem_dir):
@@ -123,13 +129,9 @@ def plot_distributions(couple_dir, pbm_dir):
         idx = [i for i, v in enumerate(time) if v == tt]
         ax.semilogx([up[i] * 1e6 for i in idx], [100 * cum[i] for i in idx],
                     color=cmap(n / max(1, len(times) - 1)), label=f"{tt:g} s")
-    ax.set_xlabel("size (µm)")
-    ax.set_ylabel("cumulative mass passing (%)")
-    ax.set_title("population balance: size distribution against time")
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(couple_dir, "distributions.png"), dpi=120)
-    plt.close(fig)
+    save(fig, ax, "size (µm)", "cumulative mass passing (%)",
+         "population balance: size distribution against time",
+         os.path.join(couple_dir, "distributions.png"))
 
 
 def plot_fit(couple_dir, pbm_dir):
@@ -147,13 +149,8 @@ def plot_fit(couple_dir, pbm_dir):
                     label=f"measured, {time[idx[0]]:g} s")
         ax.semilogx([size[i] * 1e6 for i in idx], [100 * sim[i] for i in idx], "-", color=c,
                     label=f"fit, {time[idx[0]]:g} s")
-    ax.set_xlabel("size (µm)")
-    ax.set_ylabel("cumulative passing (%)")
-    ax.set_title("calibration: fit against data")
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(couple_dir, "fit.png"), dpi=120)
-    plt.close(fig)
+    save(fig, ax, "size (µm)", "cumulative passing (%)", "calibration: fit against data",
+         os.path.join(couple_dir, "fit.png"))
 
 
 def main():

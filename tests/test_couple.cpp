@@ -10,8 +10,10 @@
 #include <regex>
 #include <sstream>
 
+#include "case_docs_check.hpp"
 #include "comminute/core/error.hpp"
 #include "comminute/run/couple.hpp"
+#include "source_file.hpp"
 #include "temp_dir.hpp"
 
 namespace comminute {
@@ -145,6 +147,17 @@ TEST(Couple, PbmCaseMustReadThisDemRun) {
   write(dir / "pbm2.toml", ufrj_case("elsewhere/spectrum.csv", "pbm_out"));
   const auto p2 = run::read_pbm_case(dir / "pbm2.toml", dem, false);
   EXPECT_EQ(key_of([&] { run::check_pbm_reads_dem(c, p2->file, dem, marker); }), "couple.pbm");
+}
+
+TEST(Couple, ExampleReadsAndItsKeysAreDocumented) {
+  const auto ex = std::filesystem::path(COMMINUTE_EXAMPLES) / "ball_mill";
+  const auto cf = CaseFile::load(ex / "couple.toml");
+  const run::CoupleCase c = run::read_couple_case(cf.root());
+  cf.reject_unknown();
+  testing::expect_used_keys_documented(cf, testing::read_source_file("docs/case-file.md"));
+  EXPECT_EQ(c.dem, ex / "ball_mill.toml");
+  // valid up to the spectrum the DEM stage writes (read whole when a run left it there)
+  EXPECT_NO_THROW(run::read_pbm_case(c.pbm, ex / "output", true));
 }
 
 TEST(Couple, SummaryTableNamesTheLinks) {

@@ -16,6 +16,7 @@
 #include "comminute/io/case/grain_compression_case.hpp"
 #include "comminute/io/case/output_case.hpp"
 #include "comminute/io/case/pbm_case.hpp"
+#include "pbm_commands.hpp"
 #include "pbm_output.hpp"
 
 namespace comminute::app {
@@ -132,6 +133,36 @@ int calibrate_grain(const CaseFile& cf, bool evaluate) {
   return 0;
 }
 
+}  // namespace
+
+int calibrate_pbm_case(const std::filesystem::path& file, bool no_plots) {
+  const auto cf = CaseFile::load(file);
+  const auto root = cf.root();
+  io::read_pbm_problem(root);  // validates the pbm part (and marks its keys used)
+  const io::PbmOutput out = io::read_pbm_output(root, cf.path());
+  const io::CalibrationCase cc = io::read_calibration(cf);
+  cf.reject_unknown();
+
+  const auto r = calibrate::multistart(cc.space, cc.objective, cc.options, Progress{});
+  const auto& best = r.starts[r.best];
+  write_results(out.directory, cc, r);
+  // The size distributions of the best fit at the case's output times.
+  const auto best_case = cc.case_with(best.best);
+  pbm::Problem p = io::read_pbm_problem(best_case.root());
+  const pbm::Solution s = pbm::solve(p);
+  write_distributions(out.directory / "distributions.csv", p, s.times, s.number);
+  write_models(out.directory, p, s);
+
+  print_best(cc.space, r, out.directory);
+  if (out.plots && !no_plots) {
+    plot("calibrate", out.directory);
+    plot("pbm", out.directory);
+  }
+  return 0;
+}
+
+namespace {
+
 std::function<int()> setup_calibrate(CLI::App& sub) {
   auto file = std::make_shared<std::string>();
   auto no_plots = std::make_shared<bool>(false);
@@ -141,33 +172,14 @@ std::function<int()> setup_calibrate(CLI::App& sub) {
   sub.add_flag("--evaluate", *evaluate,
                "grain compression mode: no fit, run the compression at the case's own values");
   return [file, no_plots, evaluate] {
-    const auto cf = CaseFile::load(*file);
-    const auto root = cf.root();
-    if (io::is_grain_calibration(root)) return calibrate_grain(cf, *evaluate);
-    if (*evaluate)
-      throw InputError(cf.path().string(), "calibration", 0,
-                       "--evaluate is for a grain compression ([calibration.compression])");
-    io::read_pbm_problem(root);  // validates the pbm part (and marks its keys used)
-    const io::PbmOutput out = io::read_pbm_output(root, cf.path());
-    const io::CalibrationCase cc = io::read_calibration(cf);
-    cf.reject_unknown();
-
-    const auto r = calibrate::multistart(cc.space, cc.objective, cc.options, Progress{});
-    const auto& best = r.starts[r.best];
-    write_results(out.directory, cc, r);
-    // The size distributions of the best fit at the case's output times.
-    const auto best_case = cc.case_with(best.best);
-    pbm::Problem p = io::read_pbm_problem(best_case.root());
-    const pbm::Solution s = pbm::solve(p);
-    write_distributions(out.directory / "distributions.csv", p, s.times, s.number);
-    write_models(out.directory, p, s);
-
-    print_best(cc.space, r, out.directory);
-    if (out.plots && !*no_plots) {
-      plot("calibrate", out.directory);
-      plot("pbm", out.directory);
+    {
+      const auto cf = CaseFile::load(*file);
+      if (io::is_grain_calibration(cf.root())) return calibrate_grain(cf, *evaluate);
+      if (*evaluate)
+        throw InputError(cf.path().string(), "calibration", 0,
+                         "--evaluate is for a grain compression ([calibration.compression])");
     }
-    return 0;
+    return calibrate_pbm_case(*file, *no_plots);
   };
 }
 

@@ -3,6 +3,7 @@
 
 #include "case_loading.hpp"
 #include "command.hpp"
+#include "couple_command.hpp"
 
 namespace comminute::app {
 namespace {
@@ -11,6 +12,13 @@ std::function<int()> setup_check(CLI::App& sub) {
   auto path = std::make_shared<std::string>();
   sub.add_option("case", *path, "case file (TOML)")->required();
   return [path] {
+    if (CaseFile::load(*path).root().has("couple")) {  // a chain: its DEM and pbm cases too
+      const PreparedCouple pc = prepare_couple_case(*path);
+      fmt::print("{}: valid couple case\n  DEM case {}: end time {} s\n  pbm case {}: {}\n", *path,
+                 pc.couple.dem.string(), pc.dem.dem.end_time, pc.couple.pbm.string(),
+                 pc.pbm_checked ? "valid" : "valid up to the files the DEM stage writes");
+      return 0;
+    }
     LoadedCase c = load_dem_case(*path);
     check_output_directory(c);
     const Simulation& sim = *c.dem.sim;

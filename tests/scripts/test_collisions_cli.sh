@@ -10,50 +10,7 @@ bin=$1 src=$2
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-cat > "$tmp/drum.toml" <<'TOML'
-[simulation]
-seed = 3
-end_time = 0.6
-gravity = [0.0, 0.0, -9.81]
-[contact]
-model = "hertz_mindlin"
-[materials.ball]
-density = 7800.0
-youngs_modulus = 1.0e7
-poisson_ratio = 0.3
-[materials.liner]
-density = 7800.0
-youngs_modulus = 1.0e7
-poisson_ratio = 0.3
-[interaction]
-restitution = 0.5
-friction = 0.3
-[[walls]]
-name = "shell"
-type = "cylinder"
-side = "inside"
-caps = true
-center = [0.0, 0.0, 0.0]
-axis = [0.0, 1.0, 0.0]
-radius = 0.05
-length = 0.03
-material = "liner"
-angular_velocity = [0.0, 8.0, 0.0]
-[[insert]]
-type = "fill"
-material = "ball"
-count = 40
-region = { shape = "box", lo = [-0.025, -0.012, -0.035], hi = [0.025, 0.012, 0.02] }
-size = { distribution = "fixed", diameter = 0.008 }
-[collisions]
-start = 0.2
-energy_min = 1.0e-9
-energy_max = 1.0e-1
-bins = 80
-[output]
-timeseries_interval = 0.05
-particles = false
-TOML
+cp "$src/tests/scripts/small_drum.toml" "$tmp/drum.toml"
 cd "$tmp"
 for run in a b; do
   sed -e "s|^\[output\]|[output]\ndirectory = \"$run\"|" drum.toml > "$run.toml"

@@ -369,6 +369,9 @@ CaseTable CaseFile::root() const {
 const std::filesystem::path& CaseFile::path() const {
   return state_->path;
 }
+std::map<std::string, std::filesystem::path> CaseFile::data_files() const {
+  return state_->files;
+}
 std::set<std::string> CaseFile::used_keys() const {
   return state_->used;
 }

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -118,6 +119,9 @@ class CaseFile {
   void reject_unknown() const;
   // Every key path that was read, for documentation checks.
   std::set<std::string> used_keys() const;
+  // The data files the readers named through file_path()/input_file(), by key path, resolved
+  // against the case file's folder (e.g. what a population balance reads from a DEM's outputs).
+  std::map<std::string, std::filesystem::path> data_files() const;
   // What a checkpoint must agree with to be continued by this case: one (section, hash) per root
   // key, in name order, from the TOML text of that table and the data files its keys named
   // (file_path()). [output] and simulation.end_time are left out: they may change on a restart.

@@ -11,7 +11,8 @@
 namespace comminute::run {
 
 int run_until(Simulation& sim, double end_time, OutputModule* output, ProgressReporter* progress,
-              const StopRequest* stop, std::FILE* log) {
+              const StopRequest* stop, std::FILE* log,
+              const std::function<bool(const Simulation&)>& until) {
   if (output) output->start(sim);
   if (progress) progress->update(sim);  // the starting step, so every step is counted
   const StopConditionModule* conditions = find_stop_conditions(sim);
@@ -32,6 +33,7 @@ int run_until(Simulation& sim, double end_time, OutputModule* output, ProgressRe
     }
     sim.step();
     if (progress) progress->update(sim);
+    if (until && until(sim)) break;
   }
   if (progress) progress->finish(sim);
   if (output) output->finish(sim);

@@ -2,6 +2,7 @@
 // The loop of `comminute run`: steps a set-up simulation to its end time with outputs, the
 // progress line and a clean stop on SIGINT/SIGTERM.
 #include <cstdio>
+#include <functional>
 
 namespace comminute {
 class Simulation;
@@ -23,8 +24,11 @@ class StopRequest;
 // SIGINT). When a [[stop]] condition (engine/stop_condition.hpp) is reached it ends after that
 // step, says which on `log`, and finishes like at the end time. Otherwise it finishes the outputs
 // at the end (last snapshot, row, checkpoint). Both return 0. A SimulationError (NaN, ...)
-// propagates; the rows written so far are already on disk.
+// propagates; the rows written so far are already on disk. `until`, when given, is asked after
+// every step: true ends the run there like a [[stop]] condition (`comminute couple` stops its DEM
+// stage once the steady-state window it waits for is long enough).
 int run_until(Simulation& sim, double end_time, OutputModule* output, ProgressReporter* progress,
-              const StopRequest* stop, std::FILE* log = stderr);
+              const StopRequest* stop, std::FILE* log = stderr,
+              const std::function<bool(const Simulation&)>& until = {});
 
 }  // namespace comminute::run

@@ -177,6 +177,16 @@ TEST(CoarseGraining, CaseKeysAreCheckedAndScaleTheInteractions) {
     const CaseFile g = CaseFile::parse(text);
     EXPECT_THROW(io::build_dem_case(g.root()), InputError) << extra;
   }
+  // a coarse particle's breakage is not its primaries': refused
+  const CaseFile b = CaseFile::parse(bed_case(2e-3, 10, 2.0, 1) +
+                                     "[materials.powder.breakage]\ncriterion = \"peak_force\"\n");
+  try {
+    io::build_dem_case(b.root());
+    ADD_FAILURE() << "coarse graining with breakage was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("materials.powder.breakage"), std::string::npos)
+        << e.what();
+  }
   // the linear law's stiffness does not scale: refused
   std::string linear = bed_case(2e-3, 10, 2.0, 1);
   const std::string law = "model = \"hertz_mindlin\"\ncohesion = \"jkr\"";
@@ -212,6 +222,10 @@ TEST(CoarseGraining, CoarseBedHasTheSolidFractionAndStressOfTheFineBed) {
     coarse.stress_zz += c.stress_zz / kSeeds;
     coarse.weight_above += c.weight_above / kSeeds;
   }
+  // the measured values, for the record (docs/models.md quotes them)
+  fmt::print("fine bed: phi {:.4f}, stress/weight {:.3f}; coarse beds: phi {:.4f}, {:.3f}\n",
+             fine.solid_fraction, fine.stress_zz / fine.weight_above, coarse.solid_fraction,
+             coarse.stress_zz / coarse.weight_above);
   EXPECT_NEAR(fine.stress_zz / fine.weight_above, -1.0, 0.03);  // measured −0.983
   // bulk solid fraction, within statistical error: measured over seeds 11–18, one coarse bed
   // has an SD of 0.013 (so the mean of four 0.0064) and one fine bed 0.004 (seeds 11–13); the

@@ -18,11 +18,16 @@ void check_coarse_graining(const CaseTable& root, const Simulation& sim) {
   // law's stiffness (N/m) would have to scale as k, and the case gives it per law, not per pair
   if (sim.law && sim.law->name() != "hertz_mindlin")
     t->fail("scale", "coarse graining scales the hertz_mindlin law only ([contact] model)");
-  for (const char* other : {"breakage", "bonds"})
-    if (root.has(other))
-      t->fail("scale", std::string("coarse graining cannot be combined with [") + other +
-                           "]: a coarse particle's breakage or bonds are not those of its primary "
-                           "particles");
+  const auto refuse = [&](const std::string& table) {
+    t->fail("scale", "coarse graining cannot be combined with [" + table +
+                         "]: a coarse particle's breakage or bonds are not those of its primary "
+                         "particles");
+  };
+  for (const char* other : {"breakage", "bonds", "grain_breakage"})
+    if (root.has(other)) refuse(other);
+  if (const auto mats = root.optional_table("materials"))
+    for (const auto& name : mats->keys())
+      if (mats->table(name).has("breakage")) refuse("materials." + name + ".breakage");
 }
 
 }  // namespace comminute::io

@@ -8,6 +8,7 @@
 #include "comminute/io/case/bonds_case.hpp"
 #include "comminute/io/case/breakage_case.hpp"
 #include "comminute/io/case/cluster_case.hpp"
+#include "comminute/io/case/coarse_graining_case.hpp"
 #include "comminute/io/case/texture_case.hpp"
 
 namespace comminute::app {
@@ -68,6 +69,7 @@ LoadedCase load_dem_case(const std::filesystem::path& path) {
   io::decide_time_step(dem);
   file.reject_unknown();
   output.case_fingerprint = file.fingerprint();
+  output.coarse_scale = io::coarse_graining_of(file.root()).scale;
   return {std::move(file), std::move(dem), std::move(output)};
 }
 

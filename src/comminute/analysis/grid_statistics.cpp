@@ -138,6 +138,7 @@ std::vector<Table> GridStatistics::tables(const Simulation&) const {
                         "kinetic_pressure", "particle_mean_stress", "particle_tau_max"})
     cols.push_back({c, "Pa"});
   cols.push_back({"contact_frequency", "1/s"});
+  cols.push_back({"primary_contact_frequency", "1/s"});
   Table t(o_.name, cols);
   for (std::size_t c = 0; c < grid_.size(); ++c) {
     const CellAverage r = average(c);
@@ -160,8 +161,9 @@ std::vector<Table> GridStatistics::tables(const Simulation&) const {
                           r.velocity.y,
                           r.velocity.z};
     for (double v : r.stress) row.emplace_back(v);
-    for (double v : {s.principal[0], s.principal[1], s.principal[2], s.mean, s.tau_max, kin,
-                     sp.mean, sp.tau_max, r.contact_frequency})
+    for (double v :
+         {s.principal[0], s.principal[1], s.principal[2], s.mean, s.tau_max, kin, sp.mean,
+          sp.tau_max, r.contact_frequency, o_.primary_frequency_factor * r.contact_frequency})
       row.emplace_back(v);
     t.add_row(row);
   }
@@ -178,15 +180,17 @@ std::vector<Table> GridStatistics::tables(const Simulation&) const {
     if (o_.spectrum_max <= 0) top = std::max(top, pressure[c]);
   }
   const std::size_t nb = o_.spectrum_bins;
-  Table spec(o_.name + "_spectrum", {{"stress", "Pa"}, {"frequency", "1/(s Pa)"}});
+  Table spec(o_.name + "_spectrum",
+             {{"stress", "Pa"}, {"frequency", "1/(s Pa)"}, {"primary_frequency", "1/(s Pa)"}});
   if (top > 0 && particles > 0 && window_time_ > 0) {
     const double width = top / static_cast<double>(nb);
     std::vector<double> bins(nb, 0.0);
     for (std::size_t c = 0; c < grid_.size(); ++c)
       bins[std::min(nb - 1, static_cast<std::size_t>(pressure[c] / width))] += starts[c];
-    for (std::size_t b = 0; b < nb; ++b)
-      spec.add_row(
-          {(static_cast<double>(b) + 0.5) * width, bins[b] / (particles * window_time_ * width)});
+    for (std::size_t b = 0; b < nb; ++b) {
+      const double n = bins[b] / (particles * window_time_ * width);
+      spec.add_row({(static_cast<double>(b) + 0.5) * width, n, o_.primary_frequency_factor * n});
+    }
   }
   return {t, spec};
 }

@@ -12,7 +12,9 @@
 // the contact frequency per particle; and the specific contact frequency ṅ(σ) (1/(s·Pa)) per
 // level of the particle pressure −tr σ_p/3 that the stress-based breakage rate integrates
 // (pbm rate `stress`). A cylindrical grid may turn with a wall about its axis; its vectors and
-// tensors are in (r, theta, axial) components.
+// tensors are in (r, theta, axial) components. Under coarse graining ([coarse_graining],
+// particles/coarse_graining.hpp) the contact frequencies are also given per primary particle:
+// the coarse particle's frequency × k^frequency_exponent.
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -33,6 +35,9 @@ struct GridStatisticsOptions {
   int rotate_with = -1;                                  // wall index, or -1 (fixed)
   std::size_t spectrum_bins = 50;                        // stress bins of ṅ(σ)
   double spectrum_max = 0;                               // Pa; 0: the largest cell stress
+  // contact frequency per primary particle / per coarse particle: k^frequency_exponent
+  // ([coarse_graining]; 1 without)
+  double primary_frequency_factor = 1;
   // output cadence; by default the files are written at the start and the end of the run only
   // (rewriting thousands of cells at the time-series cadence would cost more than the sampling)
   Cadence cadence{1e300, 0};

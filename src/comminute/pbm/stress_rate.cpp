@@ -40,7 +40,7 @@ double StressRate::rate(double size, double /*volume*/) const {
 
 namespace {
 // Keys lambda, frequency_file (CSV stress_Pa, frequency_per_s_Pa, or the grid statistics'
-// spectrum: stress [Pa], frequency [1/(s Pa)]) and strength = "<name>" with
+// spectrum: stress [Pa], primary_frequency or frequency [1/(s Pa)]) and strength = "<name>" with
 // the strength model's keys (CriticalStressRegistry).
 std::unique_ptr<SelectionFunction> make(const CaseTable& t, const ModelContext&) {
   const double lambda = t.number("lambda", Limits::non_negative());
@@ -49,7 +49,10 @@ std::unique_ptr<SelectionFunction> make(const CaseTable& t, const ModelContext&)
   // the headers of a hand-made table, or those of the DEM's grid_statistics_spectrum.csv
   const bool dem = csv.has("stress [Pa]");
   const auto s = csv.column(dem ? "stress [Pa]" : "stress_Pa");
-  const auto n = csv.column(dem ? "frequency [1/(s Pa)]" : "frequency_per_s_Pa");
+  // the DEM's frequency per primary particle (= per particle without coarse graining)
+  const char* dem_column = csv.has("primary_frequency [1/(s Pa)]") ? "primary_frequency [1/(s Pa)]"
+                                                                   : "frequency [1/(s Pa)]";
+  const auto n = csv.column(dem ? dem_column : "frequency_per_s_Pa");
   for (std::size_t r = 0; r < s.size(); ++r) {
     if (n[r] < 0)
       throw InputError(path.string(), t.key_path("frequency_file"), csv.line_of_row(r),

@@ -9,6 +9,7 @@
 #include "comminute/core/units.hpp"
 #include "comminute/engine/insertion.hpp"
 #include "comminute/io/case/cluster_case.hpp"
+#include "comminute/io/case/coarse_graining_case.hpp"
 #include "comminute/io/case/collisions_case.hpp"
 #include "comminute/io/case/lammps_data.hpp"
 #include "comminute/io/case/machine_case.hpp"
@@ -62,7 +63,10 @@ std::uint16_t material_index(const CaseTable& t, std::string_view key, const Sim
   return static_cast<std::uint16_t>(sim.materials.find(t.choice(key, names)));
 }
 
+// [interaction] and its pairs, for the primary particles; coarse graining scales them
+// (particles/coarse_graining.hpp) before the material table derives the pair constants.
 void read_interactions(const CaseTable& root, Simulation& sim) {
+  const CoarseGraining cg = coarse_graining_of(root);
   PairInput base;
   std::vector<CaseTable> pairs;
   if (auto it = root.optional_table("interaction")) {
@@ -71,7 +75,7 @@ void read_interactions(const CaseTable& root, Simulation& sim) {
   }
   const auto n = static_cast<std::uint16_t>(sim.materials.size());
   for (std::uint16_t a = 0; a < n; ++a)
-    for (std::uint16_t b = a; b < n; ++b) sim.materials.set_pair(a, b, base);
+    for (std::uint16_t b = a; b < n; ++b) sim.materials.set_pair(a, b, cg.scaled(base));
   for (const auto& t : pairs) {
     std::vector<std::string> two = t.strings("materials");
     if (two.size() != 2) t.fail("materials", "expected two material names [\"a\", \"b\"]");
@@ -79,7 +83,7 @@ void read_interactions(const CaseTable& root, Simulation& sim) {
     if (a < 0 || b < 0)
       t.fail("materials", fmt::format("unknown material \"{}\"", a < 0 ? two[0] : two[1]));
     sim.materials.set_pair(static_cast<std::uint16_t>(a), static_cast<std::uint16_t>(b),
-                           read_pair(t, base));
+                           cg.scaled(read_pair(t, base)));
   }
 }
 
@@ -235,6 +239,7 @@ DemCase build_dem_case(const CaseTable& root) {
   read_materials(root, sim);
   read_interactions(root, sim);
   read_contact(root, sim);
+  check_coarse_graining(root, sim);
   // the table each wall came from (a generated machine gives several walls from one table)
   std::vector<CaseTable> walls;
   const auto wall_tables = root.tables("walls");

@@ -24,6 +24,8 @@ struct OutputOptions {
   std::optional<std::vector<std::string>> fields;  // per-particle fields; nullopt = all
   Cadence timeseries_cadence;                      // default: 1000 rows over the run
   Cadence checkpoint_cadence;  // default: only at the end of the run and on a stop signal
+  // [coarse_graining] scale k: snapshots add the primary diameter d/k (1: none)
+  double coarse_scale = 1.0;
 
   // Where `fields` was given, so that an unknown name (known only once the modules have
   // registered their fields) is reported as an input error at the right line.

@@ -6,6 +6,7 @@
 
 #include "comminute/analysis/bed_statistics.hpp"
 #include "comminute/analysis/grid_statistics.hpp"
+#include "comminute/io/case/coarse_graining_case.hpp"
 
 namespace comminute::io {
 
@@ -58,8 +59,9 @@ int wall_index(const CaseTable& t, const char* key, const Simulation& sim) {
   t.fail(key, fmt::format("no wall is named '{}'", name));
 }
 
-void add_grid(const CaseTable& t, Simulation& sim) {
+void add_grid(const CaseTable& root, const CaseTable& t, Simulation& sim) {
   analysis::GridStatisticsOptions o;
+  o.primary_frequency_factor = coarse_graining_of(root).frequency_factor();
   o.grid = read_grid(t, false);
   o.start = t.number("start", Limits::non_negative(), 0.0);
   if (t.has("end")) o.end = t.number("end", Limits::positive());
@@ -92,7 +94,7 @@ void add_bed(const CaseTable& t, Simulation& sim) {
 }  // namespace
 
 void add_statistics(const CaseTable& root, Simulation& sim) {
-  if (auto t = root.optional_table("grid_statistics")) add_grid(*t, sim);
+  if (auto t = root.optional_table("grid_statistics")) add_grid(root, *t, sim);
   if (auto t = root.optional_table("bed_statistics")) add_bed(*t, sim);
 }
 

@@ -125,7 +125,7 @@ void OutputModule::write_checkpoint(Simulation& sim) {
 }
 
 void OutputModule::write_snapshot(Simulation& sim) {
-  vtk_->write_particles(sim.particles, sim.time, sim.step_count);
+  vtk_->write_particles(sim.particles, sim.time, sim.step_count, options_.coarse_scale);
   if (options_.walls && !sim.walls.empty()) {
     if (extent_ == 0) extent_ = wall_extent(sim);
     vtk_->write_walls(sim.walls, sim.time, sim.step_count, extent_);

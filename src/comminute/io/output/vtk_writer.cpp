@@ -13,7 +13,8 @@ std::string snapshot_name(const char* series, std::uint64_t step) {
 }  // namespace
 
 VtkPolyData particle_polydata(const ParticleStore& p, double time,
-                              const std::optional<std::vector<std::string>>& fields) {
+                              const std::optional<std::vector<std::string>>& fields,
+                              double coarse_scale) {
   VtkPolyData pd;
   pd.points = p.x;
   pd.vertex_per_point = true;
@@ -26,6 +27,11 @@ VtkPolyData particle_polydata(const ParticleStore& p, double time,
   a.push_back(vtk_array("id", std::span<const std::uint64_t>(p.id)));
   a.push_back(vtk_array("radius", std::span<const double>(p.radius)));
   a.push_back(vtk_array("diameter", std::span<const double>(diameter)));
+  if (coarse_scale != 1.0) {
+    std::vector<double> primary(diameter);
+    for (double& d : primary) d /= coarse_scale;  // docs/models.md, "Coarse graining"
+    a.push_back(vtk_array("primary_diameter", std::span<const double>(primary)));
+  }
   a.push_back(vtk_array("mass", std::span<const double>(mass)));
   a.push_back(vtk_array("velocity", std::span<const Vec3>(p.v)));
   a.push_back(vtk_array("angular_velocity", std::span<const Vec3>(p.w)));
@@ -107,9 +113,10 @@ void VtkWriter::resume(double t) {
   walls_.resume(t);
 }
 
-void VtkWriter::write_particles(const ParticleStore& p, double time, std::uint64_t step) {
+void VtkWriter::write_particles(const ParticleStore& p, double time, std::uint64_t step,
+                                double coarse_scale) {
   const std::string name = snapshot_name("particles", step);
-  write_vtp(dir_ / name, particle_polydata(p, time, fields_));
+  write_vtp(dir_ / name, particle_polydata(p, time, fields_, coarse_scale));
   particles_.add(time, name);
 }
 

@@ -25,9 +25,11 @@ namespace comminute::io {
 
 // Builds the particle polydata (points at particle centres, one vertex cell each).
 // `fields`: names of the store's per-particle fields to include; nullopt = all of them.
-// Throws Error for an unknown field name.
+// Throws Error for an unknown field name. Under coarse graining (`coarse_scale` k > 1) the
+// diameter of the primary particles a particle stands for, d/k, is added as `primary_diameter`.
 VtkPolyData particle_polydata(const ParticleStore& p, double time,
-                              const std::optional<std::vector<std::string>>& fields);
+                              const std::optional<std::vector<std::string>>& fields,
+                              double coarse_scale = 1.0);
 // Builds the wall polydata; `extent` (m) bounds infinite walls (see Wall::surface).
 VtkPolyData wall_polydata(const std::vector<std::unique_ptr<Wall>>& walls, double time,
                           double extent);
@@ -41,7 +43,8 @@ class VtkWriter {
   void resume(double t);
   void start_fresh();
 
-  void write_particles(const ParticleStore& p, double time, std::uint64_t step);
+  void write_particles(const ParticleStore& p, double time, std::uint64_t step,
+                       double coarse_scale = 1.0);
   void write_walls(const std::vector<std::unique_ptr<Wall>>& walls, double time, std::uint64_t step,
                    double extent);
 

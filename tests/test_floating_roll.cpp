@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "comminute/core/archive.hpp"
 #include "comminute/core/case_table.hpp"
 #include "comminute/core/error.hpp"
 #include "comminute/engine/wall_control.hpp"
@@ -128,6 +129,28 @@ TEST(FloatingRoll, RollOnAStaticBedBalancesItsForce) {
   EXPECT_GT(gap(p), 0.055);  // by a few Hertz overlaps (~1 mm each), not flattened
   std::printf("floating roll on the chain: gap %.6g m, particles' force %.6g N (push %g N)\n",
               gap(p), p.roll2->force.x, push);
+}
+
+TEST(FloatingRoll, MotionContinuesFromACheckpoint) {
+  // a roll closing (mid-travel, moving) saved and continued ends where the straight run does,
+  // to the bit: its position and velocity are the wall's checkpointed pose and kinematics, its
+  // travel the control's
+  const TestDir dir;
+  const std::string floating = "force = 2000.0, mass = 100.0, damping = 50.0, min_gap = 0.04";
+  Press a = build(dir, floating), b = build(dir, floating);
+  a.c.sim->dt = b.c.sim->dt = 1e-5;
+  a.c.sim->setup();
+  a.c.sim->run(1500);
+  Archive ar;
+  a.c.sim->save(ar);
+  b.c.sim->load(ar);
+  a.c.sim->run(1500);
+  b.c.sim->run(1500);
+  EXPECT_GT(gap(a), 0.04);  // still travelling
+  EXPECT_LT(gap(a), 0.06);
+  EXPECT_EQ(gap(a), gap(b));
+  EXPECT_EQ(a.roll2->kinematics.center.x, b.roll2->kinematics.center.x);
+  EXPECT_EQ(a.roll2->kinematics.velocity.x, b.roll2->kinematics.velocity.x);
 }
 
 TEST(FloatingRoll, BadKeysAreRefused) {

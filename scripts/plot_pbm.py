@@ -87,6 +87,27 @@ def plot_pbm(d):
         fig.tight_layout()
         fig.savefig(f"{d}/fracture_energy.png", dpi=120)
 
+    if os.path.exists(f"{d}/fracture_energy_distribution.csv"):  # UFRJ: the whole distribution
+        fd = read(f"{d}/fracture_energy_distribution.csv")
+        classes = sorted(set(fd["class [-]"]))
+        picks = [classes[-1], classes[len(classes) // 2]]
+        fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+        for ax, c in zip(axes, picks):
+            rows = [i for i in range(len(fd["class [-]"])) if fd["class [-]"][i] == c]
+            times = sorted({fd["time [s]"][i] for i in rows})
+            for n, time in enumerate(times):
+                idx = [i for i in rows if fd["time [s]"][i] == time]
+                ax.plot([fd["energy_upper [J/kg]"][i] for i in idx],
+                        [fd["cumulative_fraction [-]"][i] for i in idx],
+                        color=cmap(n / max(1, len(times) - 1)), label=f"{time:g} s")
+            size = fd["size_pivot [m]"][rows[0]] * 1e6
+            ax.set(xscale="log", xlabel="fracture energy E (J/kg)", ylabel="fraction with E' ≤ E",
+                   title=f"class {int(c)} ({size:.3g} µm), unbroken material")
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(title="time", fontsize=8)
+        fig.tight_layout()
+        fig.savefig(f"{d}/fracture_energy_distribution.png", dpi=120)
+
 
 def plot_calibrate(d):
     t = read(f"{d}/fit.csv")

@@ -105,6 +105,32 @@ void write_models(const std::filesystem::path& dir, const pbm::Problem& p, const
       fe.add_row({s.times[t], i, g.pivot_size(i),
                   s.median_fracture_energy[t][static_cast<Eigen::Index>(i)]});
   fe.write(dir);
+  if (s.fracture_energy.empty() || s.fracture_energy.front().mass.size() == 0) return;
+  // The whole distribution per class and time (UFRJ eq. U4), not only its median.
+  Table fd("fracture_energy_distribution", {{"time", "s"},
+                                            {"class", "-"},
+                                            {"size_pivot", "m"},
+                                            {"bin", "-"},
+                                            {"energy_lower", "J/kg"},
+                                            {"energy_upper", "J/kg"},
+                                            {"mass", "kg"},
+                                            {"fraction", "-"},
+                                            {"cumulative_fraction", "-"}});
+  for (std::size_t t = 0; t < s.times.size(); ++t) {
+    const auto& bins = s.fracture_energy[t];
+    for (Eigen::Index i = 0; i < bins.mass.cols(); ++i) {
+      const double total = bins.mass.col(i).sum();
+      double below = 0;
+      for (Eigen::Index j = 0; j < bins.mass.rows(); ++j) {
+        below += bins.mass(j, i);
+        fd.add_row({s.times[t], static_cast<std::size_t>(i),
+                    g.pivot_size(static_cast<std::size_t>(i)), static_cast<std::size_t>(j),
+                    bins.edges(j, i), bins.edges(j + 1, i), bins.mass(j, i),
+                    total > 0 ? bins.mass(j, i) / total : 0.0, total > 0 ? below / total : 0.0});
+      }
+    }
+  }
+  fd.write(dir);
 }
 
 void plot(const std::string& kind, const std::filesystem::path& dir) {

@@ -64,7 +64,26 @@ class BondLaw {
 
 using BondLawRegistry = Registry<BondLaw, const CaseTable&>;
 
+// The rotation that takes unit vector a onto unit vector b (about a x b), made once and applied
+// to each vector a bond stores (inline: it runs for every bond in every step).
+class BondTurn {
+ public:
+  BondTurn(const Vec3& a, const Vec3& b) : k_(cross(a, b)), c_(dot(a, b)) {}
+  // Rodrigues' formula with k = a x b (|k| = sin θ), c = a·b = cos θ:
+  // R v = c v + k x v + k (k·v) / (1 + c)
+  Vec3 operator()(const Vec3& v) const {
+    if (c_ <= -1.0 + 1e-12) return v;  // a half turn in one step: no rotation is defined
+    return c_ * v + cross(k_, v) + k_ * (dot(k_, v) / (1.0 + c_));
+  }
+
+ private:
+  Vec3 k_;
+  double c_;
+};
+
 // Rotates v by the rotation that takes unit vector a onto unit vector b (about a x b).
-Vec3 rotate_with(const Vec3& v, const Vec3& a, const Vec3& b);
+inline Vec3 rotate_with(const Vec3& v, const Vec3& a, const Vec3& b) {
+  return BondTurn(a, b)(v);
+}
 
 }  // namespace comminute::bonds

@@ -7,6 +7,14 @@
 
 namespace comminute::bonds {
 
+void BondList::reserve(std::size_t n) {
+  id_i.reserve(n);
+  id_j.reserve(n);
+  slot_i.reserve(n);
+  slot_j.reserve(n);
+  state.reserve(n);
+}
+
 void BondList::add(std::uint64_t a, std::uint32_t sa, std::uint64_t b, std::uint32_t sb,
                    const BondState& s) {
   id_i.push_back(a);

@@ -22,6 +22,7 @@ class BondList {
   std::vector<BondState> state;
 
   std::size_t size() const { return id_i.size(); }
+  void reserve(std::size_t n);
   void add(std::uint64_t a, std::uint32_t sa, std::uint64_t b, std::uint32_t sb,
            const BondState& s);
   // Brings the slots up to date; returns the bonds one of whose particles is gone (in order).

@@ -7,6 +7,8 @@
 #include <tuple>
 
 #include "comminute/core/error.hpp"
+#include "comminute/engine/contact_stress.hpp"
+#include "comminute/engine/parallel_threshold.hpp"
 #include "comminute/engine/simulation.hpp"
 
 namespace comminute::bonds {
@@ -58,6 +60,7 @@ void BondsModule::create_bonds(Simulation& sim) {
     found.emplace_back(p.id[i], p.id[j], i, j);
   }
   std::sort(found.begin(), found.end());
+  bonds_.reserve(bonds_.size() + found.size());  // made once: no spare capacity
   for (const auto& [a, b, i, j] : found) {
     const Vec3 d = p.x[j] - p.x[i];
     const double length = norm(d);
@@ -95,8 +98,17 @@ void BondsModule::apply(Simulation& sim) {
         bonds_.slot_i[b] != BondList::none ? bonds_.slot_i[b] : bonds_.slot_j[b];
     fail(sim, b, FailureCause::particle_removed, k != BondList::none ? p.x[k] : Vec3{});
   }
-  double elastic = 0;
-  for (std::size_t b = 0; b < bonds_.size(); ++b) {
+  // First the bonds' laws, each bond on its own (in parallel threads for many bonds), then their
+  // forces onto the particles in bond order, so that sums and results do not depend on threads.
+  const std::size_t nb = bonds_.size();
+  loads_.resize(nb);
+  points_.resize(nb);
+  released_.resize(nb);
+  const double dt = sim.dt;
+  const auto n_bonds = static_cast<std::int64_t>(nb);
+#pragma omp parallel for schedule(static) if (nb >= kParallelMin)
+  for (std::int64_t bi = 0; bi < n_bonds; ++bi) {
+    const auto b = static_cast<std::size_t>(bi);
     if (gone_[b]) continue;
     const std::uint32_t i = bonds_.slot_i[b], j = bonds_.slot_j[b];
     BondState& s = bonds_.state[b];
@@ -109,11 +121,25 @@ void BondsModule::apply(Simulation& sim) {
         p.x[i] + (p.radius[i] + 0.5 * (m.length - p.radius[i] - p.radius[j])) * m.normal;
     // velocities are at the half step, so v dt is this step's displacement
     const Vec3 vc = p.v[j] + cross(p.w[j], xc - p.x[j]) - p.v[i] - cross(p.w[i], xc - p.x[i]);
-    m.slip_increment = (vc - dot(vc, m.normal) * m.normal) * sim.dt;
-    m.rotation_increment = (p.w[j] - p.w[i]) * sim.dt;
+    m.slip_increment = (vc - dot(vc, m.normal) * m.normal) * dt;
+    m.rotation_increment = (p.w[j] - p.w[i]) * dt;
     const double before = s.dissipated;
-    const BondLoad load = law_->update(s, m);
-    sim.ledger.bond_dissipated += s.dissipated - before;
+    loads_[b] = law_->update(s, m);
+    points_[b] = xc;
+    released_[b] = s.dissipated - before;
+  }
+  double elastic = 0;
+  // a statistics module measuring this step's Love–Weber stress counts the bonds' forces too: a
+  // bond transmits force between its particles like a contact, at its contact point
+  ContactStress* stress = sim.contacts().stress();
+  if (stress && !stress->armed()) stress = nullptr;
+  for (std::size_t b = 0; b < nb; ++b) {
+    if (gone_[b]) continue;
+    const std::uint32_t i = bonds_.slot_i[b], j = bonds_.slot_j[b];
+    const BondState& s = bonds_.state[b];
+    const BondLoad& load = loads_[b];
+    const Vec3& xc = points_[b];
+    sim.ledger.bond_dissipated += released_[b];
     if (s.failed != FailureMode::none) {
       fail(sim, b, s.failed == FailureMode::tensile ? FailureCause::tensile : FailureCause::shear,
            xc);
@@ -123,6 +149,10 @@ void BondsModule::apply(Simulation& sim) {
     p.f[i] -= load.force;
     p.t[j] += cross(xc - p.x[j], load.force) + load.moment;
     p.t[i] -= cross(xc - p.x[i], load.force) + load.moment;
+    if (stress) {  // the moment load.moment is a couple: no part in the symmetric stress
+      stress->add(j, load.force, xc - p.x[j]);
+      stress->add(i, -load.force, xc - p.x[i]);
+    }
     elastic += s.strain_energy;
   }
   sim.ledger.bond_elastic = elastic;

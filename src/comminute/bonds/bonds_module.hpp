@@ -71,6 +71,9 @@ class BondsModule final : public Module, public SeriesSource {
   std::vector<BondSample> samples_;
   std::vector<BondDamageRow> damage_rows_;
   std::vector<std::uint8_t> gone_;  // scratch: bonds to remove this step
+  std::vector<BondLoad> loads_;     // scratch: this step's load of each bond
+  std::vector<Vec3> points_;        // scratch: this step's contact point of each bond (m)
+  std::vector<double> released_;    // scratch: energy each bond dissipated this step (J)
 };
 
 }  // namespace comminute::bonds

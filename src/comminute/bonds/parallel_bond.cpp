@@ -44,8 +44,9 @@ class ParallelBond final : public BondLaw {
     const double inertia = std::numbers::pi * r * r * r * r / 4;  // I = πR̄⁴/4
     const double polar = 2 * inertia;                             // J = πR̄⁴/2
     // stored shear force and moment turn with the bond into the new frame
-    s.shear_force = rotate_with(s.shear_force, s.normal, m.normal);
-    s.moment = rotate_with(s.moment, s.normal, m.normal);
+    const BondTurn turn(s.normal, m.normal);
+    s.shear_force = turn(s.shear_force);
+    s.moment = turn(s.moment);
     s.normal = m.normal;
     const Vec3& n = m.normal;
     const Vec3 twist = dot(m.rotation_increment, n) * n;

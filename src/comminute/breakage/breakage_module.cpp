@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "comminute/breakage/parallel_filter.hpp"
 #include "comminute/engine/simulation.hpp"
 #include "comminute/engine/time_step_policy.hpp"
 
@@ -71,8 +72,11 @@ void BreakageModule::post_force(Simulation& sim) {
   if (growth_.pending() > 0) growth_.grow(sim, fields_.target, ledger_);
   events_.gather_loads(sim);
   auto& p = sim.particles;
-  for (std::size_t i = 0; i < p.owned(); ++i)  // particles inserted by other modules draw strength
-    if (p.field(fields_.initialized)[i] == 0) initialize_particle(sim, i);
+  // particles inserted by other modules draw strength (in slot order: one RNG stream)
+  const auto& initialized = p.field(fields_.initialized);
+  for (const std::uint32_t i :
+       parallel_filter(p.owned(), [&](std::size_t s) { return initialized[s] == 0; }))
+    initialize_particle(sim, i);
   events_.assess(sim, materials_, fields_, log_,
                  [&](std::size_t i, const EventRecord& r) { replacement_.enqueue(p.id[i], r); });
 }

@@ -8,6 +8,7 @@
 #include "comminute/breakage/contact_at_rest.hpp"
 #include "comminute/breakage/placement/fragment_placement.hpp"
 #include "comminute/core/parallel.hpp"
+#include "comminute/engine/parallel_threshold.hpp"
 #include "comminute/engine/simulation.hpp"
 
 namespace comminute::breakage {
@@ -22,16 +23,24 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
   const std::size_t n = p.size();
   const double eps = eps_;
   const bool pushing = pushing_;
-  std::vector<double> limit(n, 0.0);
+  std::vector<double> limit(n);
+  // one byte per slot, bit 0: growing at the start of the step, bit 1: its radius changed; the
+  // pair scans read these (n bytes stay in cache) instead of the flags and both radius arrays
+  constexpr std::uint8_t was_growing = 1, grew = 2;
+  std::vector<std::uint8_t> state(n);
   const auto& target = p.field(f_target);
-  for (std::size_t i = 0; i < n; ++i)
-    if (p.flags[i] & pflag::growing) limit[i] = target[i];
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool g = (p.flags[i] & pflag::growing) != 0;
+    state[i] = g ? was_growing : 0;
+    limit[i] = g ? target[i] : 0.0;
+  }
   const auto& nl = sim.pairs();
   parallel_scatter(
       nl.size(), limit, std::numeric_limits<double>::infinity(),
       [&](std::size_t k, std::vector<double>& lim) {
         const std::uint32_t i = nl.first[k], j = nl.second[k];
-        const bool gi = p.flags[i] & pflag::growing, gj = p.flags[j] & pflag::growing;
+        const bool gi = state[i] != 0, gj = state[j] != 0;
         if (!gi && !gj) return;
         if (pushing) {  // the overlap may deepen by eps min(r_i, r_j), shared when both grow
           const double gap = norm(p.x[i] - p.x[j]) - p.radius[i] - p.radius[j];
@@ -94,6 +103,7 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
         }
         p.radius[i] = r_new;
         if (r_new == r_before[i]) return;
+        state[i] |= grew;
         for (const auto& w : sim.walls) {
           found.clear();
           w->contacts(p.x[i], r_new, 0.0, found);
@@ -109,13 +119,16 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
                            a.rebuild || b.rebuild};
       });
   pending_ -= tally[0].completed;
-  for (std::size_t s = p.owned(); s < n; ++s) p.radius[s] = p.radius[p.owner_of(s)];  // ghosts
+  for (std::size_t s = p.owned(); s < n; ++s) {  // ghosts
+    p.radius[s] = p.radius[p.owner_of(s)];
+    if (p.radius[s] != r_before[s]) state[s] |= grew;
+  }
   std::vector<double> pair_energy(1, 0.0);  // J, summed per thread
   parallel_scatter(
       nl.size(), pair_energy, 0.0,
       [&](std::size_t k, std::vector<double>& sum) {
         const std::uint32_t i = nl.first[k], j = nl.second[k];
-        if (p.radius[i] == r_before[i] && p.radius[j] == r_before[j]) return;  // nothing grew
+        if (((state[i] | state[j]) & grew) == 0) return;  // nothing grew
         const double dist = norm(p.x[i] - p.x[j]);
         const double before = r_before[i] + r_before[j] - dist,
                      after = p.radius[i] + p.radius[j] - dist;

@@ -6,6 +6,7 @@
 #include "comminute/breakage/breakage_ledger.hpp"
 #include "comminute/breakage/contact_at_rest.hpp"
 #include "comminute/breakage/fragment_growth.hpp"
+#include "comminute/breakage/parallel_filter.hpp"
 #include "comminute/core/units.hpp"
 #include "comminute/fracture/rayleigh_time.hpp"
 
@@ -41,20 +42,26 @@ void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
     std::unordered_map<std::uint64_t, std::size_t> slot_of;
     const std::unordered_set<std::uint64_t> wanted(broken_ids_.begin(), broken_ids_.end());
     std::vector<std::uint8_t> is_parent(p.size(), 0);
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if ((p.flags[i] & pflag::unbreakable) && wanted.count(p.id[i])) {
-        slot_of[p.id[i]] = i;
-        is_parent[i] = 1;
-      }
+    // (the scans of the store and of the pair list run on all threads; their hits come back in
+    // slot and pair order, so what follows is the same as after serial scans)
+    for (const std::uint32_t i : parallel_filter(p.size(), [&](std::size_t s) {
+           return (p.flags[s] & pflag::unbreakable) && wanted.count(p.id[s]) > 0;
+         })) {
+      slot_of[p.id[i]] = i;
+      is_parent[i] = 1;
+    }
     std::unordered_map<std::size_t, std::vector<Neighbour>> around;
     const auto& nl = sim.pairs();
-    for (std::size_t k = 0; k < nl.size(); ++k) {
-      // a slot of the list may be a periodic ghost (no longer in the store): its owner stands in
+    // a slot of the list may be a periodic ghost (no longer in the store): its owner stands in
+    const auto touches_parent = [&](std::size_t k) {
+      return is_parent[sim.slot_owner(nl.first[k])] != 0 ||
+             is_parent[sim.slot_owner(nl.second[k])] != 0;
+    };
+    for (const std::uint32_t k : parallel_filter(nl.size(), touches_parent)) {
       const std::uint32_t si = nl.first[k], sj = nl.second[k];
       const auto i = static_cast<std::uint32_t>(sim.slot_owner(si)),
                  j = static_cast<std::uint32_t>(sim.slot_owner(sj));
       const bool bi = is_parent[i] != 0, bj = is_parent[j] != 0;
-      if (!bi && !bj) continue;
       if (bi) around[i].push_back({j, si, sj});
       if (bj) around[j].push_back({i, sj, si});
       if (sim.pair_state().active[k]) {  // elastic energy that leaves with the parent's contacts

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "comminute/core/parallel.hpp"
+#include "comminute/engine/parallel_threshold.hpp"
 #include "comminute/engine/simulation.hpp"
 #include "comminute/fracture/energy_share.hpp"
 
@@ -110,6 +111,34 @@ void StressingEvents::assess(Simulation& sim, const BreakageMaterials& materials
                              const BreakageFields& f, EventLog& log, const BrokeFn& on_break) {
   auto& p = sim.particles;
   const std::size_t n = p.owned();  // ghosts are assessed through their owners
+  // Each particle's event reads and writes only that particle's fields (the criteria's included),
+  // so the particles are shared out in contiguous ranges; what reaches the log and the
+  // replacement queue is collected per range and handed on in range order, i.e. in slot order as
+  // a serial loop would: the result does not depend on the thread count.
+  const int nt = n >= kParallelMin ? max_threads() : 1;
+  std::vector<AssessOutcome>& outcome = outcome_;
+  outcome.resize(static_cast<std::size_t>(nt));
+#pragma omp parallel num_threads(nt)
+  {
+    const auto t = static_cast<std::size_t>(thread_id());
+    AssessOutcome& o = outcome[t];
+    o.clear();
+    const std::size_t i0 = n * t / static_cast<std::size_t>(nt),
+                      i1 = n * (t + 1) / static_cast<std::size_t>(nt);
+    assess_range(sim, materials, f, i0, i1, o);
+  }
+  for (const AssessOutcome& o : outcome) {
+    for (std::uint64_t e = 0; e < o.ended; ++e) log.count_event();
+    for (const EventRecord& r : o.logged) log.add(r);
+    for (std::size_t b = 0; b < o.broken_slots.size(); ++b)
+      on_break(o.broken_slots[b], o.broken_records[b]);
+  }
+}
+
+void StressingEvents::assess_range(Simulation& sim, const BreakageMaterials& materials,
+                                   const BreakageFields& f, std::size_t i0, std::size_t i1,
+                                   AssessOutcome& out) const {
+  auto& p = sim.particles;
   auto& in_event = p.field(f_in_event_);
   auto& energy = p.field(f_energy_);
   auto& force = p.field(f_force_);
@@ -117,7 +146,7 @@ void StressingEvents::assess(Simulation& sim, const BreakageMaterials& materials
   auto& quiet = p.field(f_quiet_);
   auto& stressing = p.field(f_stressing_);
   const auto& target = p.field(f.target);
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = i0; i < i1; ++i) {
     const auto& mat = materials[p.material[i]];
     if (!mat || (p.flags[i] & (pflag::fixed | pflag::unbreakable | pflag::remove))) continue;
     // A growing fragment already carries its full mass and transmits real contact forces: it is
@@ -146,8 +175,8 @@ void StressingEvents::assess(Simulation& sim, const BreakageMaterials& materials
       return r;
     };
     auto end_event = [&](bool broke) {
-      log.count_event();
-      if (log_all_ && !broke) log.add(record());
+      ++out.ended;
+      if (log_all_ && !broke) out.logged.push_back(record());
       if (!broke) crit.survive(p, i, d, {energy[i], force[i]});
       in_event[i] = 0;
       energy[i] = force[i] = stressing[i] = 0;
@@ -180,7 +209,8 @@ void StressingEvents::assess(Simulation& sim, const BreakageMaterials& materials
     if (crit.breaks(p, i, d, ev)) {
       EventRecord r = record();
       r.broken = 1;
-      on_break(i, r);
+      out.broken_slots.push_back(i);
+      out.broken_records.push_back(r);
       end_event(true);
       p.flags[i] |= pflag::unbreakable;  // until it is replaced at the end of the step
     } else if (quiet[i] >= end_steps_) {

@@ -64,6 +64,22 @@ class StressingEvents {
     double of(ForceMeasure m) const { return m == ForceMeasure::contact_sum ? force : largest; }
   };
   std::vector<ContactLoad> contact_load_;  // per slot, scratch
+  // What one range of particles hands on after assess_range, in slot order.
+  struct AssessOutcome {
+    std::uint64_t ended = 0;                  // events that ended (broken or not)
+    std::vector<EventRecord> logged;          // ended without breaking (log_all)
+    std::vector<std::size_t> broken_slots;    // broke, with ...
+    std::vector<EventRecord> broken_records;  // ... their events
+    void clear() {
+      ended = 0;
+      logged.clear();
+      broken_slots.clear();
+      broken_records.clear();
+    }
+  };
+  std::vector<AssessOutcome> outcome_;  // per thread, scratch
+  void assess_range(Simulation& sim, const BreakageMaterials& materials, const BreakageFields& f,
+                    std::size_t i0, std::size_t i1, AssessOutcome& out) const;
 };
 
 }  // namespace comminute::breakage

@@ -61,7 +61,9 @@ void WallControlModule::post_force(Simulation& sim) {
     double v_next = 0;
     if (s.mode == WallControlSpec::Mode::servo) {
       // Thornton, Géotechnique 50 (2000) 43, servo walls (as PFC): v = G (F_target − F), eq. W1
-      v_next = std::clamp(s.gain * (s.target_force - force(sim, k)), -s.max_speed, s.max_speed);
+      // the pre-load until the hold ends, then the target
+      const double target = sim.time < s.preload_time ? s.preload_force : s.target_force;
+      v_next = std::clamp(s.gain * (target - force(sim, k)), -s.max_speed, s.max_speed);
     } else {
       // Newton's second law along n, m dv/dt = m g·n + F_push + F·n − c v, leapfrog:
       // docs/models.md eqs. W2 (dead weight) and W4 (floating, F_push and c)

@@ -3,6 +3,8 @@
 // one unit direction n (for a plane: its normal, from the wall into the particles); the module
 // sets its velocity v n after the forces of every step, and the wall moves with it in the next.
 //   servo:       v = clamp(G (F_target − F), −v_max, v_max), F = −F_wall·n the compressive force
+//                (F_target is the pre-load force until the pre-load time, if one is given: a
+//                light pre-load held before the ramp, as in a confined-compression test)
 //                of the particles on the wall (a stress target σ gives F_target = σ A and is
 //                reported as F / A). The servo control of PFC and of Thornton's
 //                compression tests (Thornton, Géotechnique 2000, 50(1), servo on the boundary
@@ -30,16 +32,18 @@ namespace comminute {
 
 struct WallControlSpec {
   enum class Mode { servo, dead_weight, floating } mode = Mode::servo;
-  std::size_t wall = 0;     // index in Simulation::walls
-  std::string name;         // the wall's name, for the output columns
-  Vec3 direction;           // unit, the line of motion (into the particles for a servo)
-  double area = 0;          // m², > 0: stress = force / area is reported (servo target in stress)
-  double target_force = 0;  // N (servo)
-  double gain = 0;          // m/(N s) (servo)
-  double max_speed = 0;     // m/s (servo)
-  double mass = 0;          // kg (dead weight, floating)
-  double push = 0;          // N, constant force along the direction (floating)
-  double damping = 0;       // N s/m, viscous resistance to the motion (floating)
+  std::size_t wall = 0;      // index in Simulation::walls
+  std::string name;          // the wall's name, for the output columns
+  Vec3 direction;            // unit, the line of motion (into the particles for a servo)
+  double area = 0;           // m², > 0: stress = force / area is reported (servo target in stress)
+  double target_force = 0;   // N (servo)
+  double preload_force = 0;  // N (servo): the target while time < preload_time (the hold)
+  double preload_time = 0;   // s (servo): end of the pre-load hold; 0 = none
+  double gain = 0;           // m/(N s) (servo)
+  double max_speed = 0;      // m/s (servo)
+  double mass = 0;           // kg (dead weight, floating)
+  double push = 0;           // N, constant force along the direction (floating)
+  double damping = 0;        // N s/m, viscous resistance to the motion (floating)
   // m, largest travel along the direction (floating: the stop); infinite without a stop
   double max_travel = std::numeric_limits<double>::infinity();
   // m, reported as <name>_gap = gap − displacement when finite (a floating roll's gap)

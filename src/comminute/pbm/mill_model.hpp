@@ -13,6 +13,13 @@
 
 namespace comminute::pbm {
 
+// A fracture-energy distribution per size class, binned: mass (kg) in bin j of class i is
+// mass(j, i); edges(j, i) and edges(j + 1, i) bound it (J/kg).
+struct FractureEnergyBins {
+  Eigen::MatrixXd edges;
+  Eigen::MatrixXd mass;
+};
+
 class MillModel : public OdeSystem {
  public:
   // State from mass per class (virgin material) and back.
@@ -20,6 +27,10 @@ class MillModel : public OdeSystem {
   virtual Eigen::VectorXd class_mass(const Eigen::VectorXd& state) const = 0;
   // Median fracture energy (J/kg) of each class's unbroken material.
   virtual Eigen::VectorXd median_fracture_energy(const Eigen::VectorXd& state) const = 0;
+  // The whole binned distribution of the unbroken material (empty for models without one).
+  virtual FractureEnergyBins fracture_energy_distribution(const Eigen::VectorXd&) const {
+    return {};
+  }
   // Breakage rate of virgin material per class (1/s).
   virtual std::vector<double> virgin_rates() const = 0;
   // Progeny (cumulative mass passing against d/D) of class i stressed by energy class k.

@@ -42,6 +42,7 @@ Solution solve(const Problem& p) {
     for (const auto& st : states) {
       s.number.push_back(number_of(p, p.mill->class_mass(st)));
       s.median_fracture_energy.push_back(p.mill->median_fracture_energy(st));
+      s.fracture_energy.push_back(p.mill->fracture_energy_distribution(st));
     }
   } else {
     // Austin's balance is in mass; particles of class i have the pivot volume.

@@ -45,6 +45,7 @@ struct Solution {
   std::vector<double> rate_sizes;       // size (m) each S_i was evaluated at
   IntegratorStats stats;
   std::vector<Eigen::VectorXd> median_fracture_energy;  // J/kg per class (ufrj only)
+  std::vector<FractureEnergyBins> fracture_energy;      // whole distribution per time (ufrj)
 };
 
 std::unique_ptr<Integrator> make_integrator(const TimeIntegration& t);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <string>
 
 #include "comminute/core/error.hpp"
 #include "comminute/pbm/t10_breakage_function.hpp"
@@ -12,9 +13,21 @@ namespace comminute::pbm {
 UfrjMill::UfrjMill(const SizeGrid& grid, double density, UfrjParameters p)
     : n_(grid.classes()), m_(p.energy_bins), p_(std::move(p)), t10_(p_.progeny) {
   if (m_ < 4) throw Error("UfrjMill: need at least 4 energy bins");
+  for (std::size_t k = 0; k < p_.sigma_by_size.size(); ++k)
+    if (p_.sigma_by_size[k].first <= 0 || p_.sigma_by_size[k].second <= 0 ||
+        (k > 0 && p_.sigma_by_size[k].first <= p_.sigma_by_size[k - 1].first))
+      throw Error("UfrjMill: sigma_by_size needs positive sizes, increasing, and positive sigma");
   if (!std::isfinite(p_.fracture.emax_ratio))
     throw Error("UfrjMill: the fracture-energy distribution must be truncated (finite Emax/E50)");
   // Bins of ln(E/E50) from 1e−4 E50 to the upper truncation E_max/E50 (eq. U4).
+  // Energy classes of both spectra in one list (U5 sums over every collision).
+  all_ = p_.spectrum;
+  source_.assign(all_.energy.size(), 0);
+  for (std::size_t k = 0; k < p_.wall_spectrum.energy.size(); ++k) {
+    all_.energy.push_back(p_.wall_spectrum.energy[k]);
+    all_.frequency.push_back(p_.wall_spectrum.frequency[k]);
+    source_.push_back(1);
+  }
   ln_lo_ = std::log(1e-4);
   ln_step_ = (std::log(p_.fracture.emax_ratio) - ln_lo_) / static_cast<double>(m_);
   auto edge = [&](std::size_t j) { return std::exp(ln_lo_ + ln_step_ * static_cast<double>(j)); };
@@ -24,19 +37,24 @@ UfrjMill::UfrjMill(const SizeGrid& grid, double density, UfrjParameters p)
     const double x = grid.pivot_size(i);
     e50_.push_back(p_.fracture.e50(x));
     size_.push_back(x);
+    dist_.emplace_back(e50_[i], sigma_at(x), p_.fracture.emax_ratio);
     for (std::size_t j = 0; j < m_; ++j)  // the first bin also takes everything below it
       virgin_(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(i)) =
-          p_.fracture.cdf(edge(j + 1) * e50_[i], x) -
-          (j == 0 ? 0.0 : p_.fracture.cdf(edge(j) * e50_[i], x));
-    // Capture (docs/models.md eq. U1): N_cap = 1/4 + 3/4 (2 r_c/x)² for r_c ≥ x/2.
-    const double rc = p_.capture_radius > 0 ? p_.capture_radius : std::sqrt(p_.ball_radius * x);
-    const double ncap = rc >= x / 2 ? 0.25 + 0.75 * std::pow(2 * rc / x, 2) : 1.0;
-    mstar_.push_back(density * grid.pivot_volume(i) * ncap);
+          dist_[i].cdf(edge(j + 1) * e50_[i]) - (j == 0 ? 0.0 : dist_[i].cdf(edge(j) * e50_[i]));
+    // Capture (docs/models.md eq. U1): N_cap = 1/4 + 3/4 (2 r_c/x)² for r_c ≥ x/2, one m* per
+    // spectrum (media–media, and media–liner when a wall spectrum is given).
+    for (std::size_t src = 0; src < 2; ++src) {
+      const CaptureGeometry geometry = src == 0 ? p_.capture : p_.wall_capture;
+      const double rc = p_.capture_radius > 0 ? p_.capture_radius
+                                              : nip_capture_radius(geometry, p_.ball_radius, x);
+      const double ncap = rc >= x / 2 ? 0.25 + 0.75 * std::pow(2 * rc / x, 2) : 1.0;
+      mstar_[src].push_back(density * grid.pivot_volume(i) * ncap);
+    }
     if (i == 0) continue;  // the finest class is the sink
     const double y = grid.pivot_volume(i);
-    for (std::size_t k = 0; k < p_.spectrum.energy.size(); ++k) {
+    for (std::size_t k = 0; k < all_.energy.size(); ++k) {
       Stress s;
-      s.capture_rate = p_.spectrum.frequency[k] * mstar_[i] / p_.holdup;
+      s.capture_rate = all_.frequency[k] * mstar_[source_[k]][i] / p_.holdup;
       const double e = specific_energy(i, k);
       const double r = e / e50_[i];
       for (std::size_t j = 0; j < m_; ++j) {
@@ -70,13 +88,12 @@ UfrjMill::UfrjMill(const SizeGrid& grid, double density, UfrjParameters p)
 // docs/models.md eq. U2, e_ik = η E_k / m*_i: the powder's share split equally among the captured
 // particles.
 double UfrjMill::specific_energy(std::size_t i, std::size_t k) const {
-  return p_.energy_share * p_.spectrum.energy[k] / mstar_[i];
+  return p_.energy_share * all_.energy[k] / mstar_[source_[k]][i];
 }
 
 ProgenyFractions UfrjMill::progeny(std::size_t i, std::size_t k) const {
   const double e = specific_energy(i, k);
-  const double e50b =
-      fracture::t10_median_energy(p_.fracture.distribution(size_[i]), e, p_.e50b);  // eq. P1b
+  const double e50b = fracture::t10_median_energy(dist_[i], e, p_.e50b);  // eq. P1b
   return t10_progeny(t10_, t10_.t10(e, e50b));
 }
 
@@ -137,6 +154,30 @@ Eigen::VectorXd UfrjMill::median_fracture_energy(const Eigen::VectorXd& state) c
   return med;
 }
 
+double UfrjMill::sigma_at(double x) const {
+  const auto& t = p_.sigma_by_size;
+  if (t.empty()) return p_.fracture.sigma;
+  if (x <= t.front().first) return t.front().second;
+  if (x >= t.back().first) return t.back().second;
+  std::size_t k = 1;
+  while (t[k].first < x) ++k;
+  const double w = std::log(x / t[k - 1].first) / std::log(t[k].first / t[k - 1].first);
+  return (1 - w) * t[k - 1].second + w * t[k].second;
+}
+
+FractureEnergyBins UfrjMill::fracture_energy_distribution(const Eigen::VectorXd& state) const {
+  const auto m = static_cast<Eigen::Index>(m_), n = static_cast<Eigen::Index>(n_);
+  FractureEnergyBins b{Eigen::MatrixXd(m + 1, n), Eigen::MatrixXd(m, n)};
+  for (Eigen::Index c = 0; c < n; ++c) {
+    b.mass.col(c) = state.segment(c * m, m);
+    b.edges(0, c) = 0;  // bin 0 holds everything below its upper edge
+    for (Eigen::Index j = 1; j <= m; ++j)
+      b.edges(j, c) =
+          e50_[static_cast<std::size_t>(c)] * std::exp(ln_lo_ + ln_step_ * static_cast<double>(j));
+  }
+  return b;
+}
+
 // docs/models.md eq. S5 with P = F_i of the virgin bins (eq. U1-U2, U5).
 std::vector<double> UfrjMill::virgin_rates() const {
   std::vector<double> s(n_, 0.0);
@@ -149,21 +190,45 @@ std::vector<double> UfrjMill::virgin_rates() const {
 }
 
 namespace {
-// The [mill] table: spectrum_file, holdup, energy_share, capture_radius or ball_diameter,
-// damage_gamma, damage_form, energy_bins, [mill.fracture_energy]
-// (fracture::read_fracture_energy_model) and [mill.progeny] (fracture::read_t10_model,
-// fracture::read_e50b_rule).
+// The [mill] table: spectrum_file (and wall_spectrum_file, with wall_capture), holdup,
+// energy_share, capture_radius or ball_diameter (with capture = "approximate" | "ball_ball" |
+// "ball_wall"), damage_gamma, damage_form, energy_bins, [mill.fracture_energy]
+// (fracture::read_fracture_energy_model, plus sigma_sizes/sigma_values for σ(d)) and [mill.progeny]
+// (fracture::read_t10_model, fracture::read_e50b_rule).
 std::unique_ptr<MillModel> make(const CaseTable& t, const ModelContext& ctx) {
   UfrjParameters u;
   u.spectrum = read_collision_spectrum(t, "spectrum_file");
+  if (t.has("wall_spectrum_file"))
+    u.wall_spectrum = read_collision_spectrum(t, "wall_spectrum_file");
   u.holdup = t.number("holdup", Limits::positive());
   u.energy_share = t.number("energy_share", {0, 1, true, false}, 1.0);
-  if (t.has("capture_radius"))
+  if (t.has("capture_radius")) {
     u.capture_radius = t.number("capture_radius", Limits::positive());
-  else
+  } else {
     u.ball_radius = 0.5 * t.number("ball_diameter", Limits::positive());
+    const std::string g =
+        t.choice("capture", {"approximate", "ball_ball", "ball_wall"}, "approximate");
+    if (g == "ball_ball") u.capture = CaptureGeometry::ball_ball;
+    if (g == "ball_wall") u.capture = CaptureGeometry::ball_wall;
+    const std::string w =
+        t.choice("wall_capture", {"approximate", "ball_ball", "ball_wall"}, "ball_wall");
+    if (w == "approximate") u.wall_capture = CaptureGeometry::approximate;
+    if (w == "ball_ball") u.wall_capture = CaptureGeometry::ball_ball;
+  }
   const CaseTable fe = t.table("fracture_energy");
   u.fracture = fracture::read_fracture_energy_model(fe);
+  if (fe.has("sigma_sizes") || fe.has("sigma_values")) {
+    const auto sizes = fe.numbers("sigma_sizes", Limits::positive()),
+               values = fe.numbers("sigma_values", Limits::positive());
+    if (sizes.size() != values.size() || sizes.empty())
+      fe.fail("sigma_values", "give one sigma per entry of sigma_sizes");
+    for (std::size_t k = 0; k < sizes.size(); ++k) {
+      if (sizes[k] <= 0 || (k > 0 && sizes[k] <= sizes[k - 1]))
+        fe.fail("sigma_sizes", "sizes must be positive and increasing (m)");
+      if (values[k] <= 0) fe.fail("sigma_values", "every sigma must be positive");
+      u.sigma_by_size.emplace_back(sizes[k], values[k]);
+    }
+  }
   if (!std::isfinite(u.fracture.emax_ratio))
     fe.fail("emax_ratio", "the UFRJ mill bins ln(E/E50) up to Emax/E50: give a finite emax_ratio");
   u.damage = fracture::read_damage_law(t);

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <sstream>
 
 #include "comminute/analysis/size_distribution.hpp"
 #include "comminute/core/csv_columns.hpp"
 #include "comminute/core/error.hpp"
+#include "comminute/io/case/calibration_keys.hpp"
 #include "comminute/io/case/pbm_case.hpp"
 #include "comminute/pbm/problem.hpp"
 
@@ -32,43 +32,9 @@ struct DataSet {
   std::vector<Measurement> data;
 };
 
-toml::table parse_toml(const std::filesystem::path& path) {
-  (void)CaseFile::load(path);  // the text checks (UTF-8, keys) before toml++ parses it directly
-  try {
-    return toml::parse_file(path.string());
-  } catch (const toml::parse_error& e) {
-    throw InputError(path.string(), "", static_cast<long>(e.source().begin.line),
-                     fmt::format("TOML syntax error: {}", e.description()));
-  }
-}
-
-// Sets a number at a dotted key path ("a.b", "a.b[2]", "a.list[0].c") of a parsed document.
-void set_number(toml::table& doc, const std::string& key, double value) {
-  toml::node_view<toml::node> n = toml::at_path(doc, key);
-  if (auto* f = n.as_floating_point()) {
-    *f = value;
-    return;
-  }
-  const auto dot = key.find_last_of('.');
-  const auto bracket = key.find_last_of('[');
-  if (bracket != std::string::npos && (dot == std::string::npos || bracket > dot)) {
-    auto* arr = toml::at_path(doc, key.substr(0, bracket)).as_array();
-    const auto i = std::stoul(key.substr(bracket + 1));
-    arr->replace(arr->cbegin() + static_cast<long>(i), value);
-    return;
-  }
-  toml::table* parent =
-      dot == std::string::npos ? &doc : toml::at_path(doc, key.substr(0, dot)).as_table();
-  parent->insert_or_assign(key.substr(dot == std::string::npos ? 0 : dot + 1), value);
-}
-
 CaseFile with_values(const DataSet& d, const std::vector<std::string>& keys,
                      const std::vector<double>& v) {
-  toml::table doc = d.doc;
-  for (std::size_t i = 0; i < keys.size(); ++i) set_number(doc, keys[i], v[i]);
-  std::ostringstream s;
-  s << doc;
-  return CaseFile::parse(s.str(), d.path.string());
+  return case_with_numbers(d.doc, d.path, keys, v);
 }
 
 // Simulated cumulative passing at each measurement's sizes.
@@ -137,46 +103,11 @@ Measurement read_measurement(const CaseTable& t, std::size_t index) {
 CalibrationCase read_calibration(const CaseFile& file) {
   const CaseTable root = file.root();
   const CaseTable c = root.table("calibration");
-  calibrate::MultiStartOptions o;
-  o.starts = static_cast<std::size_t>(c.integer("starts", 1, 100000, 15));
-  o.seed =
-      static_cast<std::uint64_t>(c.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
-  o.threads = static_cast<int>(c.integer("threads", 0, 1024, 0));
-  o.simplex_step = c.number("simplex_step", {0, 1, true, false}, 0.1);
-  if (c.boolean("adaptive", false))  // Gao & Han coefficients, for many parameters
-    o.nelder_mead = calibrate::NelderMeadOptions::adaptive(
-        static_cast<std::size_t>(c.tables("parameter").size()));
-  o.nelder_mead.x_tolerance = c.number("x_tolerance", Limits::positive(), 1e-4);
-  o.nelder_mead.f_tolerance = c.number("f_tolerance", Limits::non_negative(), 1e-12);
-  o.nelder_mead.f_relative_tolerance =
-      c.number("f_relative_tolerance", Limits::non_negative(), 1e-6);
-  o.nelder_mead.max_evaluations =
-      static_cast<std::size_t>(c.integer("max_evaluations", 10, 10000000, 2000));
-
-  std::vector<std::string> keys;
-  std::vector<calibrate::FreeParameter> params;
-  const auto ptabs = c.tables("parameter");
-  if (ptabs.empty()) c.fail("parameter", "give at least one [[calibration.parameter]]");
-  for (const auto& t : ptabs) {
-    calibrate::FreeParameter p;
-    p.name = t.string("key");
-    p.lower = t.number("min");
-    p.upper = t.number("max");
-    if (!(p.upper > p.lower))
-      t.fail("max", fmt::format("max ({}) must exceed min ({})", p.upper, p.lower));
-    const std::string scale = t.choice("scale", {"auto", "log", "linear"}, "auto");
-    p.scale = scale == "log"      ? calibrate::Scale::log
-              : scale == "linear" ? calibrate::Scale::linear
-                                  : calibrate::auto_scale(p.lower, p.upper);
-    if (p.scale == calibrate::Scale::log && !(p.lower > 0))
-      t.fail("min", "log scale needs a positive lower bound");
-    // one key, one parameter: a second [[calibration.parameter]] of the same key would silently
-    // override the first (the later value wins in every evaluation)
-    if (std::find(keys.begin(), keys.end(), p.name) != keys.end())
-      t.fail("key", fmt::format("'{}' is already a free parameter", p.name));
-    keys.push_back(p.name);
-    params.push_back(p);
-  }
+  const calibrate::MultiStartOptions o = read_calibration_options(c, c.tables("parameter").size());
+  const FreeKeys free = read_free_parameters(c);
+  const std::vector<std::string>& keys = free.keys;
+  const std::vector<calibrate::FreeParameter>& params = free.params;
+  const std::vector<CaseTable>& ptabs = free.tables;
 
   // Data sets grouped by the case they are compared with.
   std::vector<DataSet> sets;
@@ -187,7 +118,7 @@ CalibrationCase read_calibration(const CaseFile& file) {
     const auto path = dtabs[i].has("case") ? dtabs[i].file_path("case") : file.path();
     if (!by_case.count(path.string())) {
       by_case[path.string()] = sets.size();
-      sets.push_back({path, parse_toml(path), {}});
+      sets.push_back({path, parse_case_toml(path), {}});
       if (path != file.path()) {  // another pbm case: validate it whole
         const auto other = CaseFile::load(path);
         read_pbm_problem(other.root());
@@ -206,9 +137,7 @@ CalibrationCase read_calibration(const CaseFile& file) {
       if (!n || !(n.is_floating_point() || n.is_integer()))
         ptabs[k].fail("key",
                       fmt::format("'{}' is not a numeric key of {}", keys[k], d.path.string()));
-      std::vector<double> base(params.size());
-      for (std::size_t j = 0; j < params.size(); ++j)
-        base[j] = toml::at_path(d.doc, keys[j]).value<double>().value_or(0.0);
+      const std::vector<double> base = numbers_at(d.doc, keys);
       for (const char* bound : {"min", "max"}) {
         auto v = base;
         v[k] = bound[1] == 'i' ? params[k].lower : params[k].upper;
@@ -250,7 +179,7 @@ CalibrationCase read_calibration(const CaseFile& file) {
     }
     return out;
   };
-  const DataSet main{file.path(), parse_toml(file.path()), {}};
+  const DataSet main{file.path(), parse_case_toml(file.path()), {}};
   cc.case_with = [main, keys](const std::vector<double>& v) { return with_values(main, keys, v); };
   return cc;
 }

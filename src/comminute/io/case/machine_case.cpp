@@ -122,6 +122,19 @@ void add_wall_controls(const std::vector<CaseTable>& walls, Simulation& sim) {
       }
       s.gain = c->number("gain", kPositive);
       s.max_speed = c->number("max_speed", kPositive);
+      // a light pre-load held before the ramp: the target is the pre-load until preload_time
+      const bool pre_force = c->has("preload_force"), pre_stress = c->has("preload_stress");
+      if (pre_force && pre_stress)
+        c->fail("preload_stress", "give one of 'preload_force' (N) or 'preload_stress' (Pa)");
+      if (pre_stress && !(s.area > 0))
+        c->fail("preload_stress", "needs 'area' (m²) to turn the stress into a force");
+      if (pre_force || pre_stress) {
+        s.preload_force = pre_stress ? c->number("preload_stress", Limits::non_negative()) * s.area
+                                     : c->number("preload_force", Limits::non_negative());
+        s.preload_time = c->number("preload_time", kPositive);
+      } else if (c->has("preload_time")) {
+        c->fail("preload_time", "give 'preload_force' (N) or 'preload_stress' (Pa) to hold");
+      }
     } else {
       s.mass = c->number("mass", kPositive);
       s.area = c->has("area") ? c->number("area", kPositive) : 0.0;

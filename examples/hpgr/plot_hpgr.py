@@ -63,7 +63,7 @@ def main():
           f"{spilled} particles left through other outlets")
     coarse = sum(m for d, m in product if d > args.gap)
     print(f"{100 * coarse / mass:.3g} % of the product mass is coarser than the gap "
-          f"(README.md: fragments still growing, or squeezed through by the soft contacts)")
+          f"(README.md, 'Fragments coarser than the gap')")
     sieves = [0.004 * 2 ** (k / 4) for k in range(0, 19)]
     fig, ax = plt.subplots(1, 3, figsize=(15, 4.6))
     ax[0].plot(t, f1, lw=0.8, label="roll 1: −Fx")

@@ -23,7 +23,7 @@ BreakageModule::BreakageModule(std::vector<std::optional<MaterialBreakage>> per_
     : materials_(std::move(per_material)),
       opt_(with_placement(std::move(opt))),
       events_(opt_.event_end_steps, opt_.log_all_events, opt_.max_generations),
-      growth_(opt_.growth_overlap_ratio, opt_.growth_step),
+      growth_(opt_.growth_overlap_ratio, opt_.growth_step, opt_.growth_pushes),
       replacement_(opt_.placement_model, opt_.replacement_interval) {}
 
 BreakageModule::~BreakageModule() = default;

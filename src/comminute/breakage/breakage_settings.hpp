@@ -56,7 +56,11 @@ struct BreakageOptions {
   std::shared_ptr<const FragmentPlacement> placement_model;
   double growth_overlap_ratio = 0.001;  // largest overlap growth may create, fraction of the
                                         // smaller radius (each growth step pumps in U(eps))
-  double growth_step = 0.005;    // largest radius increment per step, fraction of the final radius
+  double growth_step = 0.005;  // largest radius increment per step, fraction of the final radius
+  // false ("capped"): growth stops where an overlap reaches growth_overlap_ratio (a fragment
+  // under a sustained load never reaches full size); true ("pushing"): growth may deepen every
+  // overlap by growth_overlap_ratio per step, so a loaded fragment grows against its load
+  bool growth_pushes = false;
   int event_end_steps = 20;      // steps without new loading that end a stressing event
   int replacement_interval = 1;  // replace broken parents every this many steps (batched; each
                                  // replacement makes the engine rebuild its neighbour list)

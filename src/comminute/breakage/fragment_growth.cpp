@@ -22,6 +22,7 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
   auto& p = sim.particles;
   const std::size_t n = p.size();
   const double eps = eps_;
+  const bool pushing = pushing_;
   std::vector<double> limit(n);
   // one byte per slot, bit 0: growing at the start of the step, bit 1: its radius changed; the
   // pair scans read these (n bytes stay in cache) instead of the flags and both radius arrays
@@ -41,7 +42,13 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
         const std::uint32_t i = nl.first[k], j = nl.second[k];
         const bool gi = state[i] != 0, gj = state[j] != 0;
         if (!gi && !gj) return;
-        if (gi && gj) {  // two growing spheres share the room up to the allowed overlap
+        if (pushing) {  // the overlap may deepen by eps min(r_i, r_j), shared when both grow
+          const double gap = norm(p.x[i] - p.x[j]) - p.radius[i] - p.radius[j];
+          const double room = std::max(0.0, gap) + eps * std::min(p.radius[i], p.radius[j]);
+          const double share = gi && gj ? 0.5 * room : room;
+          if (gi) lim[i] = std::min(lim[i], p.radius[i] + share);
+          if (gj) lim[j] = std::min(lim[j], p.radius[j] + share);
+        } else if (gi && gj) {  // two growing spheres share the room up to the allowed overlap
           const double room = norm(p.x[i] - p.x[j]) - p.radius[i] - p.radius[j] +
                               eps * std::min(p.radius[i], p.radius[j]);
           lim[i] = std::min(lim[i], p.radius[i] + 0.5 * room);
@@ -74,8 +81,10 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
         for (const auto& w : sim.walls) {
           found.clear();
           w->contacts(p.x[i], p.radius[i], target[i], found);
-          for (const auto& c : found)  // distance to the wall = r - overlap; keep overlap <= eps r
-            limit[i] = std::min(limit[i], (p.radius[i] - c.overlap) / (1.0 - eps));
+          for (const auto& c : found)  // distance to the wall = r - overlap
+            limit[i] = std::min(
+                limit[i], pushing_ ? p.radius[i] + std::max(0.0, -c.overlap) + eps * p.radius[i]
+                                   : (p.radius[i] - c.overlap) / (1.0 - eps));  // <= eps r
         }
         double r_new =
             std::min({target[i], p.radius[i] + step_ * target[i], std::max(p.radius[i], limit[i])});

@@ -4,6 +4,10 @@
 // grows by at most growth_step of that radius, capped so that it creates at most an overlap of
 // growth_overlap_ratio times the smaller radius with neighbours and walls, and within the pair
 // list's reach margin. The elastic energy growth creates is booked in the ledger.
+// Capped growth stops for good where a sustained load holds an overlap above that cap (a
+// fragment in a compressed bed or the nip of a roll press stays shrunk, unloaded and unbroken,
+// docs/breakage.md); pushing growth instead lets every overlap deepen by the ratio per step, so
+// the fragment grows against the load and carries it at its full size.
 #include <cstddef>
 
 namespace comminute {
@@ -17,7 +21,8 @@ class BreakageLedger;
 
 class FragmentGrowth {
  public:
-  FragmentGrowth(double overlap_ratio, double step) : eps_(overlap_ratio), step_(step) {}
+  FragmentGrowth(double overlap_ratio, double step, bool pushing = false)
+      : eps_(overlap_ratio), step_(step), pushing_(pushing) {}
 
   // Counts the growing particles (after setup or a checkpoint).
   void recount(const ParticleStore& p);
@@ -30,8 +35,9 @@ class FragmentGrowth {
   void grow(Simulation& sim, std::size_t target, BreakageLedger& ledger);
 
  private:
-  double eps_;   // largest overlap growth may create, fraction of the smaller radius
-  double step_;  // largest radius increment per step, fraction of the final radius
+  double eps_;    // largest overlap growth may create, fraction of the smaller radius
+  double step_;   // largest radius increment per step, fraction of the final radius
+  bool pushing_;  // the overlap cap applies to the deepening per step, not to the overlap
   std::size_t pending_ = 0;
 };
 

@@ -18,10 +18,17 @@ SampleRows motion_columns(const std::vector<WallControlSpec>& walls) {
     cols.push_back({s.name + "_velocity", "m/s"});
     cols.push_back({s.name + "_force", "N"});
     cols.push_back({s.name + "_stress", "Pa"});
+    if (std::isfinite(s.gap)) cols.push_back({s.name + "_gap", "m"});
   }
   return SampleRows(std::move(cols), {});
 }
 }  // namespace
+
+// The velocity v of a wall at displacement d over the next step of length dt, halted at its stop
+// (max_travel): it arrives there at the end of the step and stays (an inelastic stop).
+double WallControlModule::stopped(const WallControlSpec& s, double d, double v, double dt) {
+  return d + v * dt > s.max_travel ? std::max(0.0, s.max_travel - d) / dt : v;
+}
 
 WallControlModule::WallControlModule(std::vector<WallControlSpec> walls)
     : specs_(std::move(walls)),
@@ -36,10 +43,12 @@ void WallControlModule::setup(Simulation& sim) {
   for (const auto& s : specs_) {
     Wall& w = *sim.walls.at(s.wall);
     w.kinematics.velocity = {};
-    // dead weight from rest: the first step moves at the mid-step velocity 0 + a dt/2, with the
+    // a free body from rest: the first step moves at the mid-step velocity 0 + a dt/2, with the
     // particles' force at t = 0 taken as zero (the forces are computed after set-up)
-    if (s.mode == WallControlSpec::Mode::dead_weight)
-      w.kinematics.velocity = (0.5 * sim.dt * dot(sim.gravity, s.direction)) * s.direction;
+    if (s.free_body()) {
+      const double a = dot(sim.gravity, s.direction) + s.push / s.mass;
+      w.kinematics.velocity = stopped(s, 0.0, 0.5 * sim.dt * a, sim.dt) * s.direction;
+    }
   }
 }
 
@@ -56,9 +65,11 @@ void WallControlModule::post_force(Simulation& sim) {
       const double target = sim.time < s.preload_time ? s.preload_force : s.target_force;
       v_next = std::clamp(s.gain * (target - force(sim, k)), -s.max_speed, s.max_speed);
     } else {
-      // Newton's second law along n, m dv/dt = m g·n + F·n, leapfrog: docs/models.md eq. W2
-      const double a = dot(sim.gravity, s.direction) + dot(w.force, s.direction) / s.mass;
-      v_next = v_now + a * sim.dt;
+      // Newton's second law along n, m dv/dt = m g·n + F_push + F·n − c v, leapfrog:
+      // docs/models.md eqs. W2 (dead weight) and W4 (floating, F_push and c)
+      const double a = dot(sim.gravity, s.direction) +
+                       (s.push + dot(w.force, s.direction) - s.damping * v_now) / s.mass;
+      v_next = stopped(s, displacement_[k], v_now + a * sim.dt, sim.dt);
     }
     w.kinematics.velocity = v_next * s.direction;
   }
@@ -72,6 +83,7 @@ void WallControlModule::sample(const Simulation& sim) {
     row.insert(row.end(),
                {displacement_[k], dot(sim.walls[s.wall]->kinematics.velocity, s.direction), f,
                 s.area > 0 ? f / s.area : 0.0});
+    if (std::isfinite(s.gap)) row.push_back(s.gap - displacement_[k]);
   }
   samples_.add(sim.time, row);
 }

@@ -12,9 +12,14 @@
 //   dead_weight: a free body of mass m on the line n under gravity and the particles' force,
 //                m dv/dt = m g·n + F_wall·n, integrated like the particles (velocity Verlet:
 //                the wall's velocity over a step is the mid-step velocity), from rest.
+//   floating:    a free body pushed along n by a constant force (a hydraulic roll of a roll
+//                press): m dv/dt = m g·n + F_push + F_wall·n − c v, integrated as the dead
+//                weight, its travel along n limited to max_travel (an inelastic stop: the wall
+//                halts there, the zero-gap stop of a press).
 // State: the wall's velocity (in the wall's checkpointed kinematics) and the displacement
 // along n (walls_control/...). Table (docs/outputs.md): wall_control.csv.
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -26,7 +31,7 @@
 namespace comminute {
 
 struct WallControlSpec {
-  enum class Mode { servo, dead_weight } mode = Mode::servo;
+  enum class Mode { servo, dead_weight, floating } mode = Mode::servo;
   std::size_t wall = 0;      // index in Simulation::walls
   std::string name;          // the wall's name, for the output columns
   Vec3 direction;            // unit, the line of motion (into the particles for a servo)
@@ -36,7 +41,14 @@ struct WallControlSpec {
   double preload_time = 0;   // s (servo): end of the pre-load hold; 0 = none
   double gain = 0;           // m/(N s) (servo)
   double max_speed = 0;      // m/s (servo)
-  double mass = 0;           // kg (dead weight)
+  double mass = 0;           // kg (dead weight, floating)
+  double push = 0;           // N, constant force along the direction (floating)
+  double damping = 0;        // N s/m, viscous resistance to the motion (floating)
+  // m, largest travel along the direction (floating: the stop); infinite without a stop
+  double max_travel = std::numeric_limits<double>::infinity();
+  // m, reported as <name>_gap = gap − displacement when finite (a floating roll's gap)
+  double gap = std::numeric_limits<double>::quiet_NaN();
+  bool free_body() const { return mode != Mode::servo; }
 };
 
 class WallControlModule final : public Module, public SeriesSource {
@@ -58,6 +70,8 @@ class WallControlModule final : public Module, public SeriesSource {
   double displacement(std::size_t k) const { return displacement_[k]; }  // m, along the direction
 
  private:
+  static double stopped(const WallControlSpec& s, double d, double v, double dt);
+
   std::vector<WallControlSpec> specs_;
   std::vector<double> displacement_;  // m, travelled along the direction since the start
   SampleRows samples_;                // per sample: time, then 4 numbers per wall

@@ -46,9 +46,12 @@ const bool registered = WallGroupRegistry::add("hpgr", [](const CaseTable& t) {
   group->parts.push_back(make_part(t, "roll1", roll_mesh(g, 0), k.center,
                                    std::make_unique<RampedRotation>(Vec3{0, k.speed, 0}, ramp),
                                    {-c, 0, 0}, k.wear));
-  group->parts.push_back(make_part(t, "roll2", roll_mesh(g, 1), k.center,
-                                   std::make_unique<RampedRotation>(Vec3{0, -k.speed, 0}, ramp),
-                                   {c, 0, 0}, k.wear));
+  // a floating roll 2 (`floating` table, read with its force control by the case builder,
+  // io/case/floating_roll_case.cpp) translates as its control says
+  group->parts.push_back(
+      make_part(t, "roll2", roll_mesh(g, 1), k.center,
+                std::make_unique<RampedRotation>(Vec3{0, -k.speed, 0}, ramp, t.has("floating")),
+                {c, 0, 0}, k.wear));
   if (g.chute)
     group->parts.push_back(make_part(t, "chute", chute_mesh(g), k.center, nullptr, {}, k.wear));
   if (g.side_plates)

@@ -73,6 +73,7 @@ breakage::BreakageModule* add_breakage(const CaseTable& root, DemCase& dem) {
     opt.growth_step = g->number("growth_step", Limits{0.0, 1.0, true, false}, 0.005);
     opt.growth_overlap_ratio =
         g->number("growth_overlap_ratio", Limits{0.0, 0.5, false, false}, 0.001);
+    opt.growth_pushes = g->choice("growth", {"capped", "pushing"}, "capped") == "pushing";
     opt.event_end_steps = static_cast<int>(g->integer("event_end_steps", 1, 1000000, 20));
     opt.log_all_events = g->boolean("log_all_events", false);
     if (g->has("max_generations"))

@@ -8,6 +8,7 @@
 #include "comminute/engine/wall_control.hpp"
 #include "comminute/geometry/plane_wall.hpp"
 #include "comminute/io/case/dem_case.hpp"
+#include "comminute/io/case/floating_roll_case.hpp"
 
 namespace comminute::io {
 
@@ -90,6 +91,10 @@ Vec3 control_direction(const CaseTable& c, const Wall& w) {
 void add_wall_controls(const std::vector<CaseTable>& walls, Simulation& sim) {
   std::vector<WallControlSpec> specs;
   for (std::size_t k = 0; k < walls.size() && k < sim.walls.size(); ++k) {
+    if (auto f = floating_roll_control(walls[k], k, *sim.walls[k])) {
+      specs.push_back(*f);
+      continue;
+    }
     const auto c = walls[k].optional_table("control");
     if (!c) continue;
     for (const char* key : {"velocity", "angular_velocity", "motion"})

@@ -1,0 +1,84 @@
+// A fragment that grows under a sustained load (the nip of a roll press, a compressed bed): a
+// growing sphere between two rigid planes closer than its final diameter. Capped growth
+// (growth_overlap_ratio as a cap on the overlap, the default) stops where the planes touch it
+// and leaves it at the gap's size for good, carrying its full mass but almost no force; pushing
+// growth (`growth = "pushing"`) lets it grow against the planes to its full size, where it
+// presses them with the Hertz force of its full-size overlap. This is why the HPGR example's
+// product held fragments coarser than the gap (examples/hpgr/README.md).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "comminute/breakage/breakage_module.hpp"
+#include "comminute/geometry/plane_wall.hpp"
+#include "dem_fixture.hpp"
+
+using namespace comminute;
+using namespace comminute::testing;
+
+namespace {
+
+constexpr double kFinal = 5e-3;      // m, the fragment's final radius
+constexpr double kHalfGap = 4.5e-3;  // m, half the distance between the planes (< kFinal)
+constexpr double kStart = 3e-3;      // m, its radius when placed
+constexpr double kYoungs = 5e7, kPoisson = 0.3, kDensity = 2500;
+
+struct Squeeze {
+  double radius = 0;      // m, after the run
+  bool growing = true;    // still flagged growing
+  double wall_force = 0;  // N, the force of the sphere on the plane at +x, along +x
+};
+
+Squeeze squeeze(bool pushing) {
+  DemSetup s;
+  s.youngs = kYoungs;
+  s.poisson = kPoisson;
+  s.density = kDensity;
+  auto sim = make_simulation(s);
+  sim->walls.push_back(std::make_unique<PlaneWall>(Vec3{-kHalfGap, 0, 0}, Vec3{1, 0, 0}));
+  sim->walls.push_back(std::make_unique<PlaneWall>(Vec3{kHalfGap, 0, 0}, Vec3{-1, 0, 0}));
+  breakage::BreakageOptions opt;
+  opt.growth_pushes = pushing;
+  // material 0 has no breakage: the sphere only grows
+  std::vector<std::optional<breakage::MaterialBreakage>> mats(1);
+  auto mod = std::make_unique<breakage::BreakageModule>(std::move(mats), opt);
+  mod->register_fields(sim->particles);
+  ParticleInit init;
+  init.radius = kStart;
+  init.density = kDensity;
+  init.flags = pflag::growing;
+  const double mass = kDensity * 4.0 / 3.0 * std::numbers::pi * std::pow(kFinal, 3);
+  sim->particles.add_with_mass(init, mass);
+  auto& p = sim->particles;
+  p.field(p.field_index("breakage.target_radius"))[0] = kFinal;
+  sim->modules.push_back(std::move(mod));
+  sim->dt = 1e-6;  // s, ~1/30 of the Rayleigh time of the 5 mm sphere
+  sim->setup();
+  // capped: full size would need 1/growth_step = 200 steps; pushing: the overlap deepens by at
+  // most growth_overlap_ratio · r = 5 µm per step, 0.5 mm in ~100 steps; 2000 steps is plenty
+  sim->run(2000);
+  return {p.radius[0], (p.flags[0] & pflag::growing) != 0, sim->walls[1]->force.x};
+}
+
+}  // namespace
+
+TEST(GrowthUnderLoad, CappedGrowthStallsAtTheGap) {
+  const Squeeze c = squeeze(false);
+  EXPECT_TRUE(c.growing);
+  // it stops where the overlap with each plane reaches 0.001 of its radius: r (1 - 0.001) =
+  // kHalfGap, to round-off (1e-12 m)
+  EXPECT_NEAR(c.radius, kHalfGap / (1 - 0.001), 1e-12);
+}
+
+TEST(GrowthUnderLoad, PushingGrowthReachesFullSizeAndCarriesTheLoad) {
+  const Squeeze c = squeeze(true);
+  EXPECT_FALSE(c.growing);
+  EXPECT_EQ(c.radius, kFinal);  // growth ends exactly at the target
+  // Hertz, sphere on a rigid-equivalent plane of the same material: F = 4/3 E* √R δ^{3/2},
+  // 1/E* = 2 (1 − ν²)/E (Johnson, Contact Mechanics, 1985, eq. 4.22), δ = R − h. The sphere is
+  // at rest between symmetric planes, so no damping force: 1e-9 relative is round-off in δ^{3/2}.
+  const double e_star = kYoungs / (2 * (1 - kPoisson * kPoisson));
+  const double f = 4.0 / 3.0 * e_star * std::sqrt(kFinal) * std::pow(kFinal - kHalfGap, 1.5);
+  EXPECT_NEAR(c.wall_force, f, 1e-9 * f);
+}

@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <fstream>
 
+#include "comminute/core/memory.hpp"
 #include "comminute/geometry/mesh_wall.hpp"
 #include "comminute/io/case/dem_case.hpp"
 
@@ -60,6 +61,7 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "usage: {} CASE.toml [warmup=1000] [steps=2000]\n", argv[0]);
     return 2;
   }
+  give_back_freed_arrays();  // as the comminute program does
   const long warm = argc > 2 ? std::atol(argv[2]) : 1000;
   const long steps = argc > 3 ? std::atol(argv[3]) : 2000;
   try {

@@ -6,6 +6,7 @@
 
 #include "command.hpp"
 #include "comminute/core/error.hpp"
+#include "comminute/core/memory.hpp"
 
 namespace comminute::app {
 
@@ -28,6 +29,7 @@ const std::vector<Command>& commands() {
 
 int main(int argc, char** argv) {
   using namespace comminute;
+  give_back_freed_arrays();
   CLI::App cli{"comminute — DEM and population-balance simulation of particle breakage"};
   cli.set_version_flag("--version", std::string("comminute ") + COMMINUTE_VERSION);
   cli.require_subcommand(1);

@@ -24,8 +24,9 @@ class HertzMindlin final : public ContactLawOf<HertzMindlin> {
     slots_.declare(layout, dynamic_friction_, rescale_);
   }
 
-  void compute(const ContactKinematics& k, const PairParameters& p, const StateRef& s,
-               ContactForces& out) const override {
+  // always inlined into the batch loop of ContactLawOf (one call per run of contacts)
+  [[gnu::always_inline]] void compute(const ContactKinematics& k, const PairParameters& p,
+                                      const StateRef& s, ContactForces& out) const override {
     const double delta = k.overlap;
     const double a = std::sqrt(k.effective_radius * delta);  // contact radius sqrt(R* delta)
     const double sn = 2.0 * p.effective_modulus * a;         // S_n = 2 E* a
@@ -33,6 +34,7 @@ class HertzMindlin final : public ContactLawOf<HertzMindlin> {
     const double beta = p.damping_beta;
     // F_n,d = -2 sqrt(5/6) beta sqrt(S_n m*) v_n (Tsuji-type, beta <= 0 here)
     const double gn = -2.0 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(sn * k.effective_mass);
+    // the same root for S_t = 8 G* a: sqrt(S_t m*) = sqrt(S_n m*) sqrt(4 G* / E*)
     const double fel = kn * delta;
     const double fd = gn * k.overlap_rate;
     out.elastic_normal_force = fel;
@@ -41,9 +43,7 @@ class HertzMindlin final : public ContactLawOf<HertzMindlin> {
     out.stored_energy = out.normal_elastic_energy;
     out.damping_dissipation = fd * k.overlap_rate * k.dt;
     const double st = 8.0 * p.effective_shear_modulus * a;  // Mindlin S_t = 8 G* a
-    const double gt = tangential_damping_
-                          ? -2.0 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(st * k.effective_mass)
-                          : 0.0;
+    const double gt = tangential_damping_ ? gn * p.shear_normal_root : 0.0;
     if (rescale_)
       out.friction_dissipation +=
           follow_stiffness(s.vec3(slots_.spring), s.f64(slots_.stiffness), st);

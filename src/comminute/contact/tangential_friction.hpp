@@ -86,11 +86,13 @@ inline void coulomb_tangential(const ContactKinematics& k, double kt, double ct,
   }
   const Vec3 trial = xi + k.tangential_velocity * k.dt;
   xi = trial;
-  const double spring = kt * std::sqrt(norm2(xi));
+  // the spring force |k_t xi| against the limits, compared squared (its root only when it slides)
+  const double spring2 = kt * kt * norm2(xi);
   Vec3 ft;
-  const bool slides = spring > limit || (was_sliding && spring > lim.slide);
+  const bool slides = spring2 > limit * limit || (was_sliding && spring2 > lim.slide * lim.slide);
   if (sliding != nullptr) *sliding = slides ? 1.0f : 0.0f;
   if (slides) {
+    const double spring = kt * std::sqrt(norm2(xi));
     // sliding: the spring is cut back to |k_t xi| = mu_d |F_n| and the dashpot is off; the
     // friction force does work |F_t| |slip|, slip being the part of the motion the spring did not
     // take

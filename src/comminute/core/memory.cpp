@@ -1,6 +1,9 @@
 #include "comminute/core/memory.hpp"
 
 #include <unistd.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 namespace comminute {
 
@@ -13,6 +16,12 @@ double physical_memory_bytes() {
 bool exceeds_memory(double bytes) {
   const double have = physical_memory_bytes();
   return have > 0 && bytes > have;
+}
+
+void give_back_freed_arrays() {
+#ifdef __GLIBC__
+  mallopt(M_MMAP_THRESHOLD, 256 * 1024);
+#endif
 }
 
 }  // namespace comminute

@@ -65,6 +65,10 @@ class ContactPipeline {
     return layout_;
   }
   bool assembled() const { return law_ != nullptr; }
+  // A rolling-resistance model is part of the contact model (the only reader of
+  // ContactKinematics::relative_angular_velocity and effective_inertia; the pair loop skips them
+  // without one).
+  bool has_rolling() const { return rolling_ != nullptr; }
   const ContactStateStore& layout() const { return layout_; }
   // null unless a module asked for it
   const LoadingRecord* loading() const { return loading_.get(); }

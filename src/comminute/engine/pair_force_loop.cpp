@@ -1,5 +1,6 @@
 #include "comminute/engine/pair_force_loop.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -58,6 +59,7 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
   if (cs) stress_.resize(static_cast<std::size_t>(nt));
   std::vector<EnergyTally> tally(static_cast<std::size_t>(nt));
   const Slots& slots = state.slots();
+  const bool rolling = pipeline.has_rolling();
   std::uint8_t* active = state.active.data();
 #pragma omp parallel num_threads(nt)
   {
@@ -89,6 +91,9 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
     std::array<ContactForces, kRun> out;
     std::array<Touching, kRun> who;
     for (auto& c : ck) c.dt = dt;
+    std::fill(out.begin(), out.end(), ContactForces{});
+    std::array<Vec3, kRun> gap;  // x_i - x_j of the gathered pairs
+    std::array<double, kRun> gap2, reach;
     std::size_t nrun = 0;
     auto flush = [&] {
       pipeline.evaluate(ContactBatch{nrun, ck.data(), pp.data(), index.data(), &slots, out.data()});
@@ -124,44 +129,58 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
                 {i, static_cast<std::int32_t>(j), X[i], X[j], fc, o.normal_force});
         }
       }
+      std::fill_n(out.begin(), nrun, ContactForces{});
       nrun = 0;
     };
-    for (std::size_t k = k0; k < k1; ++k) {
-      const std::uint32_t i = first[k], j = second[k];
-      const Vec3 d = X[i] - X[j];
-      const double rsum = R[i] + R[j];
-      const double dist2 = norm2(d);
-      if (dist2 >= rsum * rsum) {
-        if (active[k]) {  // the bodies separated: the contact's state is gone
+    for (std::size_t k = k0; k < k1;) {
+      // 1. gather the next run of touching pairs without a branch per pair (whether a pair
+      // touches is unpredictable in a dense bed); a pair that separated is rare
+      for (; k < k1 && nrun < kRun; ++k) {
+        const std::uint32_t i = first[k], j = second[k];
+        const Vec3 d = X[i] - X[j];
+        const double rsum = R[i] + R[j];
+        const double dist2 = norm2(d);
+        const bool touches = dist2 < rsum * rsum;
+        gap[nrun] = d;
+        gap2[nrun] = dist2;
+        reach[nrun] = rsum;
+        index[nrun] = k;
+        nrun += touches ? 1 : 0;
+        if (!touches & (active[k] != 0)) {  // the bodies separated: the contact's state is gone
           if (record) separated.push_back({i, j, false, record->totals(state.at(k))});
           state.clear(k);
         }
-        continue;
       }
-      if (sp && !active[k]) sp->starts.push_back({i, static_cast<std::int32_t>(j)});
-      active[k] = 1;
-      const double dist = std::sqrt(dist2);
-      const Vec3 nrm = d / dist;
-      const double overlap = rsum - dist;
-      const double ri = R[i] - 0.5 * overlap, rj = R[j] - 0.5 * overlap;
-      const Vec3 vrel = V[i] - V[j] - cross(W[i], ri * nrm) - cross(W[j], rj * nrm);
-      const double vn = dot(vrel, nrm);
-      ContactKinematics& c = ck[nrun];
-      c.normal = nrm;
-      c.overlap = overlap;
-      c.overlap_rate = -vn;
-      c.tangential_velocity = vrel - vn * nrm;
-      c.relative_angular_velocity = W[i] - W[j];
-      c.effective_radius = R[i] * R[j] / rsum;
-      c.effective_mass = M[i] * M[j] / (M[i] + M[j]);
-      c.effective_inertia = I[i] * I[j] / (I[i] + I[j]);
-      pp[nrun] = &materials.pair(mat[i], mat[j]);
-      index[nrun] = k;
-      out[nrun] = ContactForces{};
-      who[nrun] = {i, j, ri, rj};
-      if (++nrun == kRun) flush();
+      // 2. the kinematics of the run's contacts
+      for (std::size_t c = 0; c < nrun; ++c) {
+        const std::size_t kc = index[c];
+        const std::uint32_t i = first[kc], j = second[kc];
+        if (sp && !active[kc]) sp->starts.push_back({i, static_cast<std::int32_t>(j)});
+        active[kc] = 1;
+        const double rsum = reach[c];
+        const double dist = std::sqrt(gap2[c]);
+        const Vec3 nrm = gap[c] / dist;
+        const double overlap = rsum - dist;
+        const double ri = R[i] - 0.5 * overlap, rj = R[j] - 0.5 * overlap;
+        const Vec3 vrel = V[i] - V[j] - cross(W[i], ri * nrm) - cross(W[j], rj * nrm);
+        const double vn = dot(vrel, nrm);
+        ContactKinematics& ct = ck[c];
+        ct.normal = nrm;
+        ct.overlap = overlap;
+        ct.overlap_rate = -vn;
+        ct.tangential_velocity = vrel - vn * nrm;
+        ct.effective_radius = R[i] * R[j] / rsum;
+        ct.effective_mass = M[i] * M[j] / (M[i] + M[j]);
+        if (rolling) {  // read by the rolling models only
+          ct.relative_angular_velocity = W[i] - W[j];
+          ct.effective_inertia = I[i] * I[j] / (I[i] + I[j]);
+        }
+        pp[c] = &materials.pair(mat[i], mat[j]);
+        who[c] = {i, j, ri, rj};
+      }
+      // 3. the law and the forces
+      if (nrun == kRun || k == k1) flush();
     }
-    flush();
     tally[t] = tl;
   }
   for (const auto& list : cross_)

@@ -17,12 +17,13 @@ void NeighborList::make_rows(std::size_t n) {
 void NeighborList::build(const ParticleStore& p, double skin, const std::vector<std::uint8_t>& keep,
                          const std::vector<std::uint64_t>* labels) {
   // 1. the ids (and periodic labels) of the pairs whose state is to be carried over
+  // (by their slots: the ids and labels of the last build are kept aside until the plan is made)
   saved_.clear();
-  const bool labelled = labels_.size() == ids_.size();
+  old_labelled_ = labels_.size() == ids_.size();
   for (std::size_t k = 0; k < keep.size() && k < first.size(); ++k)
-    if (keep[k])
-      saved_.push_back({ids_[first[k]], ids_[second[k]], labelled ? labels_[first[k]] : 0,
-                        labelled ? labels_[second[k]] : 0, static_cast<std::uint32_t>(k)});
+    if (keep[k]) saved_.push_back({first[k], second[k], static_cast<std::uint32_t>(k)});
+  old_ids_.swap(ids_);
+  old_labels_.swap(labels_);
   if (labels)
     labels_ = *labels;
   else
@@ -120,8 +121,11 @@ void NeighborList::build(const ParticleStore& p, double skin, const std::vector<
   }
   make_rows(n);
   plan_carry(p, labels);
-  // the saved pairs' ids and the id table served plan_carry only: released for the same reason
-  std::vector<SavedIds>().swap(saved_);
+  // the saved pairs, their old ids and the id table served plan_carry only: released for the same
+  // reason
+  std::vector<SavedPair>().swap(saved_);
+  std::vector<std::uint64_t>().swap(old_ids_);
+  std::vector<std::uint64_t>().swap(old_labels_);
   std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(slot_of_id_);
   skin_ = skin;
   index_.adopt(std::move(small_grid), std::move(large_grid), !large_set.empty(), r_ref, r_max, n);
@@ -158,7 +162,10 @@ void NeighborList::plan_carry(const ParticleStore& p, const std::vector<std::uin
   carry_.to.clear();
   carry_.reversed.clear();
   carry_.shift.clear();
-  for (const auto& e : saved_) {
+  for (const auto& s : saved_) {
+    const bool lab = old_labelled_;
+    const SavedIds e{old_ids_[s.a], old_ids_[s.b], lab ? old_labels_[s.a] : 0,
+                     lab ? old_labels_[s.b] : 0, s.pair};
     std::uint32_t a = 0, b = 0;
     if (!find_pair(e, a, b)) continue;  // removed particle (or its image is gone)
     const std::uint64_t shift = label(a) - e.la;
@@ -173,7 +180,7 @@ void NeighborList::plan_carry(const ParticleStore& p, const std::vector<std::uin
           carry_.from.push_back(e.pair);
           carry_.to.push_back(k);
           carry_.reversed.push_back(a != saved_owner ? 1 : 0);
-          carry_.shift.push_back(shift);
+          if (labels) carry_.shift.push_back(shift);
           found = true;
           break;
         }

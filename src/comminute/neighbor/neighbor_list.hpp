@@ -35,7 +35,7 @@ class NeighborList {
              const std::vector<std::uint64_t>* labels = nullptr);
   // The carry plan of the last build: old pair from[e] is new pair to[e], listed the other way
   // round (owner and other swapped) when reversed[e]; shift[e] is how much the labels of the pair
-  // changed (the owner's new label minus the old one of the same body; 0 without periodicity).
+  // changed (the owner's new label minus the old one of the same body; empty without labels).
   // Kept pairs of removed particles are absent.
   struct Carry {
     std::vector<std::uint32_t> from, to;
@@ -90,7 +90,12 @@ class NeighborList {
     std::uint32_t pair;    // its index in the old list
   };
   std::vector<std::uint64_t> labels_;  // labels at build (periodic runs)
-  std::vector<SavedIds> saved_;
+  struct SavedPair {  // a kept pair by its slots in the last build (ids in old_ids_): 12 B
+    std::uint32_t a, b, pair;
+  };
+  std::vector<SavedPair> saved_;
+  std::vector<std::uint64_t> old_ids_, old_labels_;  // ids_, labels_ of the last build
+  bool old_labelled_ = false;
   std::vector<std::uint32_t> spare_first_, spare_second_;  // in-place updates copy into these
   std::vector<std::vector<std::uint32_t>> thread_first_, thread_second_;
   std::vector<std::pair<std::uint64_t, std::uint32_t>> slot_of_id_;

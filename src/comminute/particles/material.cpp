@@ -41,6 +41,7 @@ void MaterialTable::rebuild_pair(std::uint16_t a, std::uint16_t b, const PairInp
   q.effective_shear_modulus = 1.0 / (2 * (2 - v1) * (1 + v1) / m1.youngs_modulus +
                                      2 * (2 - v2) * (1 + v2) / m2.youngs_modulus);
   q.damping_beta = damping_beta(p.restitution);
+  q.shear_normal_root = std::sqrt(4.0 * q.effective_shear_modulus / q.effective_modulus);
   if (q.dynamic_friction < 0) q.dynamic_friction = q.friction;
   pairs_[a * n + b] = q;
 }

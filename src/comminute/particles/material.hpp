@@ -30,6 +30,8 @@ struct PairParameters : PairInput {
   double effective_modulus = 0.0;        // E*, 1/E* = (1-v1^2)/E1 + (1-v2^2)/E2  [Pa]
   double effective_shear_modulus = 0.0;  // G*, 1/G* = 2(2-v1)(1+v1)/E1 + ...      [Pa]
   double damping_beta = 0.0;             // beta = ln e / sqrt(ln^2 e + pi^2) (<= 0), linear law
+  double shear_normal_root = 0.0;        // sqrt(8 G* a / (2 E* a)) = sqrt(4 G* / E*): Mindlin's
+                                         // S_t / S_n under the root (a law's dashpots share a root)
 };
 
 class MaterialTable {

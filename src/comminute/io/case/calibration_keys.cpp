@@ -32,6 +32,42 @@ void set_number(toml::table& doc, const std::string& key, double value) {
   parent->insert_or_assign(key.substr(dot == std::string::npos ? 0 : dot + 1), value);
 }
 
+// TOML text of a node, tables inline and arrays on one line: toml++'s own formatter measures
+// arrays with a cast that is undefined behaviour for numbers below 0.1 (toml_formatter.inl,
+// count_inline_columns: size_t of a negative log10), so the document is written here; scalars
+// keep toml++'s printing.
+void write_toml_value(std::ostream& os, const toml::node& n);
+
+void write_toml_key(std::ostream& os, std::string_view key) {
+  os << toml::value<std::string>(std::string(key));
+}
+
+void write_toml_value(std::ostream& os, const toml::node& n) {
+  if (const auto* t = n.as_table()) {
+    os << '{';
+    const char* sep = " ";
+    for (auto&& [k, v] : *t) {
+      os << sep;
+      write_toml_key(os, k.str());
+      os << " = ";
+      write_toml_value(os, v);
+      sep = ", ";
+    }
+    os << (t->empty() ? "}" : " }");
+    return;
+  }
+  if (const auto* a = n.as_array()) {
+    os << '[';
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      if (i) os << ", ";
+      write_toml_value(os, *a->get(i));
+    }
+    os << ']';
+    return;
+  }
+  n.visit([&os](auto&& v) { os << v; });
+}
+
 }  // namespace
 
 calibrate::MultiStartOptions read_calibration_options(const CaseTable& c,
@@ -96,7 +132,12 @@ CaseFile case_with_numbers(const toml::table& doc, const std::filesystem::path& 
   toml::table d = doc;
   for (std::size_t i = 0; i < keys.size(); ++i) set_number(d, keys[i], values[i]);
   std::ostringstream s;
-  s << d;
+  for (auto&& [k, v] : d) {
+    write_toml_key(s, k.str());
+    s << " = ";
+    write_toml_value(s, v);
+    s << '\n';
+  }
   return CaseFile::parse(s.str(), path.string());
 }
 

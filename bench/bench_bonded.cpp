@@ -17,68 +17,14 @@
 #include <filesystem>
 #include <fstream>
 
-#include "comminute/io/case/bonds_case.hpp"
-#include "comminute/io/case/dem_case.hpp"
+#include "case_sections.hpp"
 
 namespace {
-
-constexpr double kR = 1e-3;  // m
 
 double user_seconds() {
   rusage ru{};
   getrusage(RUSAGE_SELF, &ru);
   return static_cast<double>(ru.ru_utime.tv_sec) + 1e-6 * static_cast<double>(ru.ru_utime.tv_usec);
-}
-
-std::string case_text(int side, bool bonded, const std::string& data) {
-  const double l = 2 * kR * side;
-  std::string s = fmt::format(R"(
-[simulation]
-seed = 1
-end_time = 1.0
-time_step = 2e-6
-skin = 2e-4
-gravity = [0.0, 0.0, -9.81]
-[contact]
-model = "hertz_mindlin"
-[materials.rock]
-density = 2500.0
-youngs_modulus = 5.0e7
-poisson_ratio = 0.3
-[interaction]
-restitution = 0.5
-friction = 0.5
-[[walls]]
-name = "bin"
-type = "box"
-lo = [0.0, 0.0, 0.0]
-hi = [{l:.9g}, {l:.9g}, {h:.9g}]
-open = ["+z"]
-material = "rock"
-[[walls]]
-name = "piston"
-type = "plane"
-point = [0.0, 0.0, {l:.9g}]
-normal = [0.0, 0.0, -1.0]
-material = "rock"
-velocity = [0.0, 0.0, -0.01]
-[[insert]]
-type = "data_file"
-material = "rock"
-file = "{data}"
-)",
-                              fmt::arg("l", l), fmt::arg("h", 2 * l), fmt::arg("data", data));
-  if (bonded)
-    s += R"(
-[bonds]
-law = "parallel_bond"
-gap_tolerance = 1e-6
-normal_stiffness = 1e10
-shear_stiffness = 4e9
-tensile_strength = 1e7
-shear_strength = 1e7
-)";
-  return s;
 }
 
 }  // namespace
@@ -97,23 +43,16 @@ int main(int argc, char** argv) {
     const auto dir = std::filesystem::temp_directory_path() /
                      fmt::format("comminute_bench_bonded_{}_{}", side, ::getpid());
     std::filesystem::create_directories(dir);
-    {
-      std::ofstream d(dir / "lattice.data");
-      d << "# simple cubic lattice of touching spheres\n\n"
-        << side * side * side << " atoms\n1 atom types\n\nAtoms # sphere\n\n";
-      long id = 1;
-      for (int k = 0; k < side; ++k)
-        for (int j = 0; j < side; ++j)
-          for (int i = 0; i < side; ++i)
-            d << id++ << " 1 " << 2 * kR << " 2500 " << kR * (2 * i + 1) << ' ' << kR * (2 * j + 1)
-              << ' ' << kR * (2 * k + 1) << '\n';
-    }
-    std::ofstream(dir / "bed.toml") << case_text(side, bonded, "lattice.data");
-    const CaseFile file = CaseFile::load(dir / "bed.toml");
-    io::DemCase c = io::build_dem_case(file.root());
-    const bonds::BondsModule* b = io::add_bonds(file.root(), c);
-    io::decide_time_step(c);
-    file.reject_unknown();
+    testing::write_sphere_lattice(dir / "lattice.data", side, testing::kLatticeRadius, 2500);
+    testing::LatticeBedKeys bed;
+    bed.side = side;
+    bed.box_height = 4 * testing::kLatticeRadius * side;  // twice the lattice
+    bed.piston_speed = 0.01;
+    if (bonded) bed.bonds = testing::ParallelBondKeys{1e-6, 1e10, 4e9, 1e7, 1e7};
+    std::ofstream(dir / "bed.toml") << testing::lattice_bed_case(bed, "lattice.data");
+    testing::LoadedCase loaded = testing::load_case(dir / "bed.toml");
+    io::DemCase& c = loaded.dem;
+    const bonds::BondsModule* b = loaded.bonds;
     Simulation& sim = *c.sim;
     sim.setup();
     sim.run(static_cast<std::uint64_t>(warm));

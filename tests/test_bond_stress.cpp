@@ -9,9 +9,8 @@
 #include <fstream>
 #include <numbers>
 
+#include "case_sections.hpp"
 #include "comminute/analysis/bed_statistics.hpp"
-#include "comminute/io/case/bonds_case.hpp"
-#include "comminute/io/case/dem_case.hpp"
 #include "temp_dir.hpp"
 
 using namespace comminute;
@@ -27,45 +26,16 @@ constexpr double kPitch = 2 * kR + kGap;              // m, centre distance
 constexpr double kHeight = kSpheres * kPitch - kGap;  // m, column height unloaded
 
 std::string case_text() {
-  return fmt::format(R"(
-[simulation]
-seed = 1
-end_time = 1.0
-time_step = 2e-7
-skin = 1e-4
-[contact]
-model = "hertz_mindlin"
-[materials.rock]
-density = 2500.0
-youngs_modulus = 1.0e10
-poisson_ratio = 0.25
-[interaction]
-restitution = 0.3
-friction = 0.0
-[[walls]]
-name = "floor"
-type = "plane"
-point = [0.0, 0.0, 0.0]
-normal = [0.0, 0.0, 1.0]
-material = "rock"
-[[walls]]
-name = "piston"
-type = "plane"
-point = [0.0, 0.0, {top}]
-normal = [0.0, 0.0, -1.0]
-material = "rock"
-control = {{ mode = "servo", target_force = {force}, area = {area}, gain = 0.17, max_speed = 0.05 }}
-[[insert]]
-type = "data_file"
-material = "rock"
-file = "column.data"
-[bonds]
-law = "parallel_bond"
-gap_tolerance = 3e-5
-normal_stiffness = 1e12
-shear_stiffness = 4e11
-tensile_strength = 1e9
-shear_strength = 1e9
+  using namespace comminute::testing;
+  return dem_sections({1, 1.0, 2e-7, 1e-4}, {"rock", 2500.0, 1.0e10, 0.25, 0.3, 0.0}) +
+         plane_wall("floor", 0.0, 1.0, "rock") +
+         plane_wall("piston", kHeight, -1.0, "rock",
+                    fmt::format("control = {{ mode = \"servo\", target_force = {}, area = {}, "
+                                "gain = 0.17, max_speed = 0.05 }}",
+                                kForce, kArea)) +
+         data_file_insert("rock", "column.data") +
+         parallel_bond_section({3e-5, 1e12, 4e11, 1e9, 1e9}) +
+         fmt::format(R"(
 [bed_statistics]
 shape = "cylinder"
 origin = [0.0, 0.0, 0.0]
@@ -78,7 +48,6 @@ every = 10
 load_wall = "piston"
 force_chains = false
 )",
-                     fmt::arg("top", kHeight), fmt::arg("force", kForce), fmt::arg("area", kArea),
                      fmt::arg("r", kR), fmt::arg("n", kSpheres));
 }
 
@@ -96,12 +65,9 @@ TEST(BondStress, BondedColumnLoveWeberStressIsTheAppliedForcePerArea) {
   }
   const std::filesystem::path path = dir.path() / "column.toml";
   std::ofstream(path) << case_text();
-  const CaseFile file = CaseFile::load(path);
-  io::DemCase dem = io::build_dem_case(file.root());
-  const bonds::BondsModule* bonded = io::add_bonds(file.root(), dem);
-  io::decide_time_step(dem);
-  file.reject_unknown();
-  Simulation& sim = *dem.sim;
+  comminute::testing::LoadedCase loaded = comminute::testing::load_case(path);
+  const bonds::BondsModule* bonded = loaded.bonds;
+  Simulation& sim = *loaded.dem.sim;
   const analysis::BedStatistics* bed = nullptr;
   for (const auto& m : sim.modules)
     if (auto* b = dynamic_cast<const analysis::BedStatistics*>(m.get())) bed = b;

@@ -297,13 +297,20 @@ TEST(BreakageEngine, FragmentsGrowToTheirFullSize) {
 namespace {
 // Drift (J) of the energy balance KE + elastic + damping + friction + removed - wall work over
 // the same simulated time in the small gas (no friction, so no non-conservative Mindlin spring),
-// with the time step divided by `refine`; also the energy breakage moved through the ledger.
-std::pair<double, double> gas_balance_drift(int refine) {
+// with the time step divided by `refine`; also the energy breakage moved through the ledger and
+// the elastic energy that placement and growth created.
+struct GasBalance {
+  double drift = 0, removed = 0, created = 0;  // J
+};
+GasBalance gas_balance_drift(int refine, bool pushing = false) {
   auto sim = box_gas(0.0, 29);
   std::vector<std::optional<breakage::MaterialBreakage>> mats;
   mats.emplace_back(weak_material(0.02, 0.3, 0.0012, 0.3, breakage::FinesRule::mass, 0.2));
-  sim->modules.push_back(
-      std::make_unique<breakage::BreakageModule>(std::move(mats), breakage::BreakageOptions{}));
+  breakage::BreakageOptions opt;
+  opt.growth_pushes = pushing;
+  auto mod = std::make_unique<breakage::BreakageModule>(std::move(mats), opt);
+  const breakage::BreakageModule& module = *mod;
+  sim->modules.push_back(std::move(mod));
   sim->dt =
       0.2 / refine * 3.1416 * 0.00018 * std::sqrt(2500 / (5e7 / 2.6)) / (0.1631 * 0.3 + 0.8766);
   sim->setup();
@@ -314,7 +321,7 @@ std::pair<double, double> gas_balance_drift(int refine) {
   };
   const double b0 = balance();
   sim->run(3000 * static_cast<std::uint64_t>(refine));
-  return {balance() - b0, sim->ledger.removed};
+  return {balance() - b0, sim->ledger.removed, module.created_energy()};
 }
 }  // namespace
 
@@ -327,11 +334,29 @@ std::pair<double, double> gas_balance_drift(int refine) {
 // parents replaced in the same step had their starting overlap booked, the drift stayed at
 // ~3e-3 of it whatever dt.)
 TEST(BreakageEngine, EnergyLedgerClosesThroughBreakage) {
-  const auto [coarse, removed] = gas_balance_drift(1);
-  const auto fine = gas_balance_drift(4).first;
-  ASSERT_GT(removed, 0.0);
-  EXPECT_LE(std::abs(fine), 0.5 * std::abs(coarse));
-  EXPECT_LE(std::abs(fine), 1e-3 * removed);
-  RecordProperty("drift_coarse_J", std::to_string(coarse));
-  RecordProperty("drift_fine_J", std::to_string(fine));
+  const GasBalance coarse = gas_balance_drift(1);
+  const GasBalance fine = gas_balance_drift(4);
+  ASSERT_GT(coarse.removed, 0.0);
+  EXPECT_LE(std::abs(fine.drift), 0.5 * std::abs(coarse.drift));
+  EXPECT_LE(std::abs(fine.drift), 1e-3 * coarse.removed);
+  RecordProperty("drift_coarse_J", std::to_string(coarse.drift));
+  RecordProperty("drift_fine_J", std::to_string(fine.drift));
+  RecordProperty("created_J", std::to_string(fine.created));
+}
+
+// The same with pushing growth (`growth = "pushing"`): the fragments' overlaps with siblings and
+// neighbours deepen by growth_overlap_ratio per step until they are full size, so growth puts
+// more elastic energy into the contacts; booked as created energy, the ledger closes the same way.
+TEST(BreakageEngine, EnergyLedgerClosesThroughBreakageWithPushingGrowth) {
+  const GasBalance coarse = gas_balance_drift(1, true);
+  const GasBalance fine = gas_balance_drift(4, true);
+  RecordProperty("drift_coarse_J", std::to_string(coarse.drift));
+  RecordProperty("drift_fine_J", std::to_string(fine.drift));
+  RecordProperty("created_J", std::to_string(fine.created));
+  const double capped = gas_balance_drift(4).created;
+  RecordProperty("created_capped_J", std::to_string(capped));
+  ASSERT_GT(coarse.removed, 0.0);
+  EXPECT_GT(fine.created, capped);  // pushing was exercised: deeper overlaps than the cap allows
+  EXPECT_LE(std::abs(fine.drift), 0.5 * std::abs(coarse.drift));
+  EXPECT_LE(std::abs(fine.drift), 1e-3 * coarse.removed);
 }

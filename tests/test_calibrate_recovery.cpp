@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "case_sections.hpp"
 #include "comminute/calibrate/multistart.hpp"
 #include "comminute/core/rng.hpp"
 #include "comminute/io/case/calibration_case.hpp"
@@ -67,6 +68,7 @@ std::filesystem::path make_case(const std::filesystem::path& dir, double noise) 
     f << "size_m,cumulative_passing\n";
     for (double d : sizes) f << d << ",0.5\n";
   }
+  using comminute::testing::calibration_parameter;
   const std::string calib = R"(
 [calibration]
 starts = 6
@@ -75,22 +77,10 @@ x_tolerance = 1e-5
 f_relative_tolerance = 1e-9
 f_tolerance = 1e-14
 max_evaluations = 1500
-[[calibration.parameter]]
-key = "rate.k"
-min = 0.01
-max = 3.0
-[[calibration.parameter]]
-key = "rate.alpha"
-min = 0.3
-max = 3.0
-[[calibration.parameter]]
-key = "breakage.q"
-min = 0.3
-max = 10.0
-[[calibration.parameter]]
-key = "breakage.nu"
-min = 2.0
-max = 50.0
+)" + calibration_parameter("rate.k", 0.01, 3.0) +
+                            calibration_parameter("rate.alpha", 0.3, 3.0) +
+                            calibration_parameter("breakage.q", 0.3, 10.0) +
+                            calibration_parameter("breakage.nu", 2.0, 50.0) + R"(
 [[calibration.data]]
 file = "m2.csv"
 time = 2.0

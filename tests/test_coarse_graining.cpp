@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "case_docs_check.hpp"
+#include "case_sections.hpp"
 #include "comminute/analysis/grid_statistics.hpp"
 #include "comminute/contact/jkr_curve.hpp"
 #include "comminute/core/error.hpp"
@@ -77,7 +78,8 @@ constexpr double kSide = 0.01;  // m, periodic box side
 // coarse-grained by `scale`; a grid of 1 mm layers averages over the last 50 ms of 0.25 s.
 std::string bed_case(double d, int count, double scale, std::uint64_t seed,
                      double surface_energy = 0.01) {
-  return fmt::format(R"(
+  return fmt::format(
+      R"(
 [simulation]
 seed = {seed}
 end_time = 0.25
@@ -98,13 +100,7 @@ surface_energy = {gamma}
 [coarse_graining]
 scale = {scale}
 frequency_exponent = -1.0
-[[walls]]
-name = "floor"
-type = "plane"
-point = [0.0, 0.0, 0.0]
-normal = [0.0, 0.0, 1.0]
-material = "powder"
-[[insert]]
+{floor}[[insert]]
 type = "fill"
 material = "powder"
 count = {count}
@@ -118,8 +114,9 @@ cells = [1, 1, 30]
 start = 0.2
 every = 10
 )",
-                     fmt::arg("seed", seed), fmt::arg("L", kSide), fmt::arg("scale", scale),
-                     fmt::arg("count", count), fmt::arg("d", d), fmt::arg("gamma", surface_energy));
+      fmt::arg("seed", seed), fmt::arg("L", kSide), fmt::arg("scale", scale),
+      fmt::arg("count", count), fmt::arg("d", d), fmt::arg("gamma", surface_energy),
+      fmt::arg("floor", comminute::testing::plane_wall("floor", 0.0, 1.0, "powder")));
 }
 
 struct BedResult {

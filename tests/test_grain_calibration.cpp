@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "case_docs_check.hpp"
+#include "case_sections.hpp"
 #include "comminute/calibrate/multistart.hpp"
 #include "comminute/core/error.hpp"
 #include "comminute/io/case/grain_compression_case.hpp"
@@ -41,66 +42,17 @@ void write_grain(const std::filesystem::path& file) {
 
 std::string case_text(double stiffness, double strength, bool calibration) {
   const double top = 2 * kR + 2 * kR * std::sqrt(2.0 / 3.0) + 1e-6;  // 1 um above the grain
-  std::string s =
-      fmt::format(R"(
-[simulation]
-seed = 3
-end_time = 0.002
-time_step = 1e-7
-skin = 5e-5
-[contact]
-model = "hertz_mindlin"
-[materials.grain]
-density = 1450.0
-youngs_modulus = 1.0e10
-poisson_ratio = 0.3
-[interaction]
-restitution = 0.3
-friction = 0.0
-[[walls]]
-name = "floor"
-type = "plane"
-point = [0.0, 0.0, 0.0]
-normal = [0.0, 0.0, 1.0]
-material = "grain"
-[[walls]]
-name = "platen"
-type = "plane"
-point = [0.0, 0.0, {top:.15g}]
-normal = [0.0, 0.0, -1.0]
-material = "grain"
-velocity = [0.0, 0.0, -0.1]
-[[insert]]
-type = "data_file"
-material = "grain"
-file = "grain.data"
-[bonds]
-law = "parallel_bond"
-gap_tolerance = 1e-6
-normal_stiffness = {kn:.15g}
-shear_stiffness = 4e11
-tensile_strength = {sigma:.15g}
-shear_strength = 1e9
-)",
-                  fmt::arg("top", top), fmt::arg("kn", stiffness), fmt::arg("sigma", strength));
+  using namespace comminute::testing;
+  std::string s = dem_sections({3, 0.002, 1e-7, 5e-5}, {"grain", 1450.0, 1.0e10, 0.3, 0.3, 0.0}) +
+                  plane_wall("floor", 0.0, 1.0, "grain") +
+                  plane_wall("platen", top, -1.0, "grain", velocity_z(-0.1)) +
+                  data_file_insert("grain", "grain.data") +
+                  parallel_bond_section({1e-6, stiffness, 4e11, strength, 1e9});
   if (calibration)
-    s += R"(
-[calibration]
-starts = 2
-seed = 5
-threads = 1
-[[calibration.parameter]]
-key = "bonds.normal_stiffness"
-min = 2e11
-max = 2e13
-[[calibration.parameter]]
-key = "bonds.tensile_strength"
-min = 1e6
-max = 2e7
-[calibration.compression]
-platen = "platen"
-file = "measured.csv"
-)";
+    s += "[calibration]\nstarts = 2\nseed = 5\nthreads = 1\n" +
+         calibration_parameter("bonds.normal_stiffness", 2e11, 2e13) +
+         calibration_parameter("bonds.tensile_strength", 1e6, 2e7) +
+         "[calibration.compression]\nplaten = \"platen\"\nfile = \"measured.csv\"\n";
   return s;
 }
 

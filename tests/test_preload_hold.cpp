@@ -1,13 +1,12 @@
 // A light pre-load held before the ramp (servo walls, `preload_force` / `preload_time`): a
 // servo piston closes on a sphere resting on the floor, holds the pre-load until the hold's end
 // and only then drives on to its target.
-#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <fstream>
 
+#include "case_sections.hpp"
 #include "comminute/engine/wall_control.hpp"
-#include "comminute/io/case/dem_case.hpp"
 #include "temp_dir.hpp"
 
 using namespace comminute;
@@ -27,44 +26,19 @@ Seen press(const std::string& preload) {
   std::ofstream(dir.path() / "sphere.data")
       << "# one sphere on the floor\n\n1 atoms\n1 atom types\n\nAtoms # sphere\n\n"
       << "1 1 0.002 2500 0 0 0.001\n";
-  std::ofstream(dir.path() / "hold.toml") << fmt::format(R"(
-[simulation]
-seed = 1
-end_time = 1.0
-time_step = 1e-6
-[contact]
-model = "hertz_mindlin"
-[materials.rock]
-density = 2500.0
-youngs_modulus = 1.0e8
-poisson_ratio = 0.25
-[interaction]
-restitution = 0.3
-friction = 0.0
-[[walls]]
-name = "floor"
-type = "plane"
-point = [0.0, 0.0, 0.0]
-normal = [0.0, 0.0, 1.0]
-material = "rock"
-[[walls]]
-name = "piston"
-type = "plane"
-point = [0.0, 0.0, 0.00205]
-normal = [0.0, 0.0, -1.0]
-material = "rock"
-control = {{ mode = "servo", target_force = 10.0, gain = 5e-2, max_speed = 0.05{} }}
-[[insert]]
-type = "data_file"
-material = "rock"
-file = "sphere.data"
-)",
-                                                         preload);
-  const CaseFile file = CaseFile::load(dir.path() / "hold.toml");
-  io::DemCase dem = io::build_dem_case(file.root());
-  io::decide_time_step(dem);
-  file.reject_unknown();
-  Simulation& sim = *dem.sim;
+  {
+    using namespace comminute::testing;
+    std::ofstream(dir.path() / "hold.toml")
+        << dem_sections({1, 1.0, 1e-6, 0.0}, {"rock", 2500.0, 1.0e8, 0.25, 0.3, 0.0})
+        << plane_wall("floor", 0.0, 1.0, "rock")
+        << plane_wall("piston", 0.00205, -1.0, "rock",
+                      "control = { mode = \"servo\", target_force = 10.0, gain = 5e-2, "
+                      "max_speed = 0.05" +
+                          preload + " }")
+        << data_file_insert("rock", "sphere.data");
+  }
+  comminute::testing::LoadedCase loaded = comminute::testing::load_case(dir.path() / "hold.toml");
+  Simulation& sim = *loaded.dem.sim;
   const WallControlModule* control = nullptr;
   for (const auto& m : sim.modules)
     if (auto* c = dynamic_cast<const WallControlModule*>(m.get())) control = c;

@@ -136,7 +136,10 @@ int calibrate_grain(const CaseFile& cf, bool evaluate) {
 }  // namespace
 
 int calibrate_pbm_case(const std::filesystem::path& file, bool no_plots) {
-  const auto cf = CaseFile::load(file);
+  return calibrate_pbm_case(CaseFile::load(file), no_plots);
+}
+
+int calibrate_pbm_case(const CaseFile& cf, bool no_plots) {
   const auto root = cf.root();
   io::read_pbm_problem(root);  // validates the pbm part (and marks its keys used)
   const io::PbmOutput out = io::read_pbm_output(root, cf.path());
@@ -172,14 +175,13 @@ std::function<int()> setup_calibrate(CLI::App& sub) {
   sub.add_flag("--evaluate", *evaluate,
                "grain compression mode: no fit, run the compression at the case's own values");
   return [file, no_plots, evaluate] {
-    {
-      const auto cf = CaseFile::load(*file);
-      if (io::is_grain_calibration(cf.root())) return calibrate_grain(cf, *evaluate);
-      if (*evaluate)
-        throw InputError(cf.path().string(), "calibration", 0,
-                         "--evaluate is for a grain compression ([calibration.compression])");
-    }
-    return calibrate_pbm_case(*file, *no_plots);
+    // loaded once: the mode is read from it, then the chosen mode reads the rest
+    const auto cf = CaseFile::load(*file);
+    if (io::is_grain_calibration(cf.root())) return calibrate_grain(cf, *evaluate);
+    if (*evaluate)
+      throw InputError(cf.path().string(), "calibration", 0,
+                       "--evaluate is for a grain compression ([calibration.compression])");
+    return calibrate_pbm_case(cf, *no_plots);
   };
 }
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <unordered_set>
 
 #include "comminute/breakage/texture/texture_sampler.hpp"
 #include "comminute/core/error.hpp"
@@ -84,12 +83,16 @@ void TextureModule::sample_new(Simulation& sim, std::size_t i) {
 
 void TextureModule::update(Simulation& sim) {
   auto& p = sim.particles;
+  // Particles are given a texture only when they are new (inserted, or fragments: new ids), and
+  // textures are dropped only when particles leave: with the same ids issued and the same count
+  // as at the last pass, every textured particle still owns its texture and nothing is stale.
+  if (p.next_id() == seen_next_id_ && p.owned() == seen_owned_) return;
   std::map<std::uint64_t, std::vector<std::size_t>> fragments;  // by parent id: deterministic
   std::vector<std::size_t> fresh;
-  std::size_t live = 0;
+  alive_.clear();  // ids of the textured particles (one pass over the particles)
   for (std::size_t i = 0; i < p.owned(); ++i) {
     if (!textured(p, i)) continue;
-    ++live;
+    alive_.push_back(p.id[i]);
     const auto owner = static_cast<std::uint64_t>(p.field(owner_)[i]);
     if (owner == p.id[i]) continue;
     if (owner == 0)
@@ -126,13 +129,13 @@ void TextureModule::update(Simulation& sim) {
   for (std::size_t i : fresh) sample_new(sim, i);
   // Textures of particles that left the run (outlets, fines): dropped.
   // Every textured particle now owns one texture, so a larger pool holds stale ones.
-  if (pool_.size() > live) {
-    std::unordered_set<std::uint64_t> alive;
-    for (std::size_t i = 0; i < p.owned(); ++i)
-      if (textured(p, i)) alive.insert(p.id[i]);
+  if (pool_.size() > alive_.size()) {
+    std::sort(alive_.begin(), alive_.end());
     for (std::uint64_t id : pool_.owners())
-      if (!alive.count(id)) pool_.erase(id);
+      if (!std::binary_search(alive_.begin(), alive_.end(), id)) pool_.erase(id);
   }
+  seen_next_id_ = p.next_id();
+  seen_owned_ = p.owned();
 }
 
 void TextureModule::share(const ParticleStore& p, std::size_t parent,
@@ -201,6 +204,7 @@ void TextureModule::load(const Archive& a) {
   sampled_ = c[0];
   inherited_ = c[1];
   rows_.load(a, "texture/rows");
+  seen_next_id_ = 0;  // the particles were read back too: the next update looks at them all
 }
 
 }  // namespace comminute::breakage::texture

@@ -5,7 +5,8 @@
 //   texture.owner    id of the particle whose texture this particle carries (0: none yet),
 //   composition.<k>  volume fraction of phase k (the voxel fraction of the particle's texture),
 // which the composition-dependent criterion and the outlets read. Every step (pre_force, after
-// insertion, and end_of_step, after breakage) it gives each particle of a textured material whose
+// insertion, and end_of_step, after breakage) where particles were added or removed since its last
+// look, it makes one pass over the particles and gives each particle of a textured material whose
 // texture.owner is not its own id its texture:
 //   texture.owner = 0            a new particle: an n^3 cube sampled from the volume at a random
 //                                position and orientation (texture_sampler.hpp); with
@@ -89,6 +90,11 @@ class TextureModule final : public Module, public SeriesSource, public FragmentM
   std::map<std::uint64_t, std::vector<Cube>> pending_;  // split at breakage, by parent id
   std::uint64_t inherited_ = 0, sampled_ = 0;  // fragments given a texture, particles sampled
   SampleRows rows_;                            // texture.csv
+  // The particles as update() last saw them: the next id to be issued (0: not seen yet) and the
+  // count; unchanged, no particle needs a texture and none left (update() skips its pass).
+  std::uint64_t seen_next_id_ = 0;
+  std::size_t seen_owned_ = 0;
+  std::vector<std::uint64_t> alive_;  // ids of the textured particles (update()'s pass)
 };
 
 }  // namespace comminute::breakage::texture

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "comminute/core/archive.hpp"
 #include "comminute/core/case_table.hpp"
 #include "comminute/geometry/jaw_crusher.hpp"
 #include "comminute/geometry/single_toggle.hpp"
@@ -127,6 +128,27 @@ TEST(SingleToggleJaw, MeshFollowsTheLinkageAndMovesWithItsVelocity) {
   // steps: x is flat there to (pi/2000)^2 / 2 of its curvature, < 1e-8 m here
   EXPECT_NEAR(lo, 0.01, 1e-15);
   EXPECT_NEAR(hi - lo, 0.005, 1e-8);
+}
+
+TEST(SingleToggleJaw, RestartsBitForBit) {
+  const CaseFile f = CaseFile::parse(kToggleJaw);
+  auto ga = WallGroupRegistry::create("jaw_crusher", f.root());
+  auto gb = WallGroupRegistry::create("jaw_crusher", f.root());
+  auto& a = static_cast<MeshWall&>(*ga->parts[1].wall);
+  auto& b = static_cast<MeshWall&>(*gb->parts[1].wall);
+  const double dt = 0.2 / 2000;
+  for (int s = 0; s < 777; ++s) a.advance(dt);
+  Archive ar;
+  a.save(ar, "walls/1/");
+  b.load(ar, "walls/1/");
+  for (int s = 0; s < 1500; ++s) {
+    a.advance(dt);
+    b.advance(dt);
+  }
+  const Vec3 p{0.03, 0.02, 0.05};
+  EXPECT_EQ(a.to_world(p), b.to_world(p));
+  EXPECT_EQ(a.kinematics.center, b.kinematics.center);
+  EXPECT_EQ(a.kinematics.angular_velocity, b.kinematics.angular_velocity);
 }
 
 TEST(SingleToggleJaw, BadKeysAreRefusedWithFileKeyAndLine) {

@@ -137,6 +137,8 @@ void MeshWall::save(Archive& a, const std::string& prefix) const {
   a.put(prefix + "orientation", std::vector<Vec3>{axes_[0], axes_[1], axes_[2]});
   a.put(prefix + "motion_time", std::vector<double>{motion_time_});
   a.put(prefix + "wear_volume", wear_volume_);
+  // a closed-form pose's centre at t = 0 (a restart must not recover it with round-off)
+  if (start_center_known_) a.put(prefix + "start_center", std::vector<Vec3>{start_center_});
 }
 
 void MeshWall::load(const Archive& a, const std::string& prefix) {
@@ -158,7 +160,13 @@ void MeshWall::load(const Archive& a, const std::string& prefix) {
   for (int k = 0; k < 3; ++k)
     axes_[static_cast<std::size_t>(k)] = axes[static_cast<std::size_t>(k)];
   motion_time_ = t[0];
-  start_center_known_ = false;
+  start_center_known_ = a.has(prefix + "start_center");
+  if (start_center_known_) {
+    const auto c0 = a.get<Vec3>(prefix + "start_center");
+    if (c0.size() != 1 || !is_finite(c0[0]))
+      throw Error(fmt::format("checkpoint entry '{}start_center' does not hold one point", prefix));
+    start_center_ = c0[0];
+  }
   wear_volume_ = std::move(wear);
   reach_ = -1;
 }

@@ -2,7 +2,9 @@
 """Plots the jaw-crusher run: the throughput (cumulative product mass against time, with its mean
 rate over the window the product flows), the jaw force along x (the bed pushes the swinging jaw
 open: crusher_swing_jaw_Fx) and its power (crusher_swing_jaw_P), and the product's size
-distribution (mass passing each sieve) from the outlet log, the feed's for comparison.
+distribution (mass passing each sieve) from the outlet log, the feed's for comparison. When the
+run has the bounded sampling plane "discharge" (sampling_planes.csv, sampling_log.csv), the mass
+that crossed it downwards is drawn next to the product mass.
 
 usage: examples/jaw_crusher/plot_jaw_crusher.py OUTPUT_DIR [--wall crusher] [--outlet product]
        [--from T0] [--feed A B] [--oss S] [-o jaw_crusher.png]
@@ -65,6 +67,13 @@ def main():
     fig, ax = plt.subplots(1, 3, figsize=(15, 4.6))
     ax[0].plot(to, mass, lw=1.2, label="product mass")
     ax[0].plot([t0, t1], [m0, mass[-1]], "--k", label=f"mean rate {rate:.3g} kg/s")
+    planes_path = os.path.join(args.output, "sampling_planes.csv")
+    if os.path.exists(planes_path):
+        planes = read(planes_path)
+        crossed = column(planes, "discharge_mass_positive [kg]", planes_path)
+        ax[0].plot(column(planes, "time [s]", planes_path), crossed, lw=1.0, ls=":",
+                   label="down through the discharge plane")
+        print(f"discharge plane: {crossed[-1]:.4g} kg crossed downwards")
     ax[0].set_ylabel("cumulative product [kg]")
     ax[1].plot(t, fx, lw=0.6, label="swinging jaw Fx [N]")
     ax[1].set_ylabel("force [N]")

@@ -2,10 +2,22 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "comminute/core/error.hpp"
 #include "comminute/engine/simulation.hpp"
 
 namespace comminute {
+
+bool SamplingPlaneSpec::within(const Vec3& x, const Vec3& v) const {
+  if (extent == Extent::infinite) return true;
+  const double d = dot(x - point, normal), vn = dot(v, normal);
+  const Vec3 crossed = vn != 0 ? x - v * (d / vn) : x - d * normal;
+  const Vec3 r = crossed - point;
+  if (extent == Extent::disc) return norm2(r - dot(r, normal) * normal) <= radius * radius;
+  return std::abs(dot(r, u)) <= half_u && std::abs(dot(r, cross(normal, u))) <= half_v;
+}
 
 namespace {
 SampleRows crossing_columns(const std::vector<SamplingPlaneSpec>& planes) {
@@ -37,20 +49,41 @@ void SamplingPlaneModule::setup(Simulation& sim) {
 
 void SamplingPlaneModule::end_of_step(Simulation& sim) {
   const auto& p = sim.particles;
+  const std::vector<double>* target = p.has_field("breakage.target_radius")
+                                          ? &p.field(p.field_index("breakage.target_radius"))
+                                          : nullptr;
+  const std::vector<double>* generation =
+      p.has_field("breakage.generation") ? &p.field(p.field_index("breakage.generation")) : nullptr;
   for (std::size_t k = 0; k < planes_.size(); ++k) {
     std::vector<double>& side = sim.particles.field(fields_[k]);
     PlaneCrossings& c = counts_[k];
-    const Vec3 o = planes_[k].point, n = planes_[k].normal;
+    const SamplingPlaneSpec& plane = planes_[k];
+    const Vec3 o = plane.point, n = plane.normal;
     for (std::size_t i = 0; i < p.size(); ++i) {
       const double now = dot(p.x[i] - o, n) > 0 ? 1.0 : -1.0;
-      if (side[i] == -1.0 && now == 1.0) {
-        ++c.positive;
-        c.mass_positive += p.physical_mass(i);
-      } else if (side[i] == 1.0 && now == -1.0) {
-        ++c.negative;
-        c.mass_negative += p.physical_mass(i);
-      }
+      const bool crossed = side[i] * now == -1.0;
       side[i] = now;
+      if (!crossed || !plane.within(p.x[i], p.v[i])) continue;
+      const double mass = p.physical_mass(i);
+      if (now == 1.0) {
+        ++c.positive;
+        c.mass_positive += mass;
+      } else {
+        ++c.negative;
+        c.mass_negative += mass;
+      }
+      if (!plane.log) continue;
+      LoggedCrossing r;
+      r.time = sim.time;
+      r.step = sim.step_count;
+      r.id = p.id[i];
+      r.mass = mass;
+      r.diameter = 2 * std::max(p.radius[i], target ? (*target)[i] : 0.0);
+      r.plane = static_cast<std::uint32_t>(k);
+      r.direction = now == 1.0 ? 1 : -1;
+      r.generation = generation ? static_cast<std::uint32_t>((*generation)[i]) : 0;
+      r.material = p.material[i];
+      log_.push_back(r);
     }
   }
 }
@@ -63,18 +96,44 @@ void SamplingPlaneModule::sample(const Simulation& sim) {
   samples_.add(sim.time, row);
 }
 
-std::vector<Table> SamplingPlaneModule::tables(const Simulation&) const {
-  return {samples_.table("sampling_planes")};
+std::vector<Table> SamplingPlaneModule::tables(const Simulation& sim) const {
+  std::vector<Table> out{samples_.table("sampling_planes")};
+  bool logged = false;
+  for (const auto& s : planes_) logged = logged || s.log;
+  if (!logged) return out;
+  Table t("sampling_log", {{"time", "s"},
+                           {"step", "-"},
+                           {"plane", "-"},
+                           {"direction", "-"},
+                           {"id", "-"},
+                           {"material", "-"},
+                           {"mass", "kg"},
+                           {"diameter", "m"},
+                           {"generation", "-"}});
+  for (const LoggedCrossing& r : log_)
+    t.add_row({r.time, r.step, planes_.at(r.plane).name, static_cast<std::int64_t>(r.direction),
+               r.id, sim.materials.material(r.material).name, r.mass, r.diameter, r.generation});
+  out.push_back(std::move(t));
+  return out;
 }
 
 void SamplingPlaneModule::save(Archive& a) const {
   a.put("sampling_planes/counts", counts_);
+  a.put("sampling_planes/log", log_);
   samples_.save(a, "sampling_planes/samples");
 }
 
 void SamplingPlaneModule::load(const Archive& a) {
   counts_ = a.get<PlaneCrossings>("sampling_planes/counts");
   samples_.load(a, "sampling_planes/samples");
+  log_.clear();  // (checkpoints from before bounded planes have no log)
+  if (a.has("sampling_planes/log")) log_ = a.get<LoggedCrossing>("sampling_planes/log");
+  for (const auto& r : log_)
+    if (r.plane >= planes_.size() || !planes_[r.plane].log || !(r.mass > 0))
+      throw Error(fmt::format(
+          "checkpoint entry 'sampling_planes/log' holds a crossing of plane {} (the case has {}, "
+          "logging: see [[sampling_planes]] log) or a mass that is not positive",
+          r.plane, planes_.size()));
   if (counts_.size() != planes_.size())
     throw Error(
         fmt::format("checkpoint entry 'sampling_planes/counts' holds {} planes, the case {}",

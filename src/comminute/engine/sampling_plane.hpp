@@ -7,8 +7,14 @@
 // side). At the end of every step a change from −1 to +1 is a crossing in the positive
 // direction (along the normal), from +1 to −1 one in the negative direction; a particle seen for
 // the first time (inserted, or at the start) only has its side recorded. Centres exactly on the
-// plane count as the negative side. The plane is infinite.
-// Table (docs/outputs.md): sampling_planes.csv, cumulative crossings and mass per direction.
+// plane count as the negative side.
+// A plane may be bounded (a disc, or a rectangle): a change of side counts only when the point
+// where the centre crossed the plane lies within the bound. That point is the centre at the end
+// of the step taken back along its velocity to the plane, x - v d / (v . n) (d the signed
+// distance; exact for a straight path within the step), or its projection when v . n = 0.
+// Tables (docs/outputs.md): sampling_planes.csv, cumulative crossings and mass per direction;
+// sampling_log.csv, one row per counted crossing of a plane with `log` (time, plane, direction,
+// id, material, mass, diameter, generation).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -21,8 +27,30 @@
 namespace comminute {
 
 struct SamplingPlaneSpec {
+  enum class Extent { infinite, disc, rectangle };
   std::string name;
   Vec3 point, normal;  // normal unit: the positive direction of crossing
+  Extent extent = Extent::infinite;
+  double radius = 0;              // m, disc about `point`
+  Vec3 u{};                       // unit, in the plane: the rectangle's first side
+  double half_u = 0, half_v = 0;  // m, half sides along u and normal x u
+  bool log = false;               // log each counted crossing
+  // True when a centre at x (end of the step) with velocity v crossed within the bound.
+  bool within(const Vec3& x, const Vec3& v) const;
+};
+
+// One counted crossing of a logged plane; trivially copyable (checkpointed as an array).
+struct LoggedCrossing {
+  double time = 0;               // s
+  std::uint64_t step = 0;        // the step in which it crossed
+  std::uint64_t id = 0;          // particle id
+  double mass = 0;               // kg
+  double diameter = 0;           // m (the final size of a growing fragment)
+  std::uint32_t plane = 0;       // index in the planes
+  std::int32_t direction = 0;    // +1 along the normal, -1 against it
+  std::uint32_t generation = 0;  // breakage generation
+  std::uint16_t material = 0;
+  std::uint16_t pad = 0;
 };
 
 struct PlaneCrossings {
@@ -47,11 +75,13 @@ class SamplingPlaneModule final : public Module, public SeriesSource {
   // checkpoint is loaded, which holds them).
   void register_fields(ParticleStore& p);
   const std::vector<PlaneCrossings>& crossings() const { return counts_; }
+  const std::vector<LoggedCrossing>& log() const { return log_; }
 
  private:
   std::vector<SamplingPlaneSpec> planes_;
   std::vector<std::size_t> fields_;
   std::vector<PlaneCrossings> counts_;
+  std::vector<LoggedCrossing> log_;
   SampleRows samples_;  // per sample: time, then 4 numbers per plane
 };
 

@@ -62,7 +62,29 @@ int MeshWall::to_world(std::vector<WallContact>& out, std::size_t first) const {
   return static_cast<int>(out.size() - first);
 }
 
+bool MeshWall::place_exactly(double t_old, double t_new) {
+  Vec3 d, rot;
+  if (!motion_ || !motion_->pose(t_old, d, rot)) return false;
+  // the centre at t = 0, once (a restart recovers it from the saved centre and time)
+  if (!start_center_known_) {
+    start_center_ = kinematics.center - d;
+    start_center_known_ = true;
+  }
+  motion_->pose(t_new, d, rot);
+  const Vec3 c0 = start_center_;
+  // world = R (body - c0) + c0 + d, the body frame being the world at t = 0
+  axes_ = {rotate(Vec3{1, 0, 0}, rot), rotate(Vec3{0, 1, 0}, rot), rotate(Vec3{0, 0, 1}, rot)};
+  offset_ = c0 + d - rotate_to_world(c0);
+  kinematics.center = c0 + d;
+  return true;
+}
+
 void MeshWall::advance(double dt) {
+  if (place_exactly(motion_time_, motion_time_ + dt)) {
+    motion_time_ += dt;
+    motion_->at(motion_time_, kinematics.velocity, kinematics.angular_velocity);
+    return;
+  }
   // the motion at mid-step integrates a time-dependent rotation to second order
   if (motion_)
     motion_->at(motion_time_ + 0.5 * dt, kinematics.velocity, kinematics.angular_velocity);
@@ -115,6 +137,8 @@ void MeshWall::save(Archive& a, const std::string& prefix) const {
   a.put(prefix + "orientation", std::vector<Vec3>{axes_[0], axes_[1], axes_[2]});
   a.put(prefix + "motion_time", std::vector<double>{motion_time_});
   a.put(prefix + "wear_volume", wear_volume_);
+  // a closed-form pose's centre at t = 0 (a restart must not recover it with round-off)
+  if (start_center_known_) a.put(prefix + "start_center", std::vector<Vec3>{start_center_});
 }
 
 void MeshWall::load(const Archive& a, const std::string& prefix) {
@@ -136,6 +160,13 @@ void MeshWall::load(const Archive& a, const std::string& prefix) {
   for (int k = 0; k < 3; ++k)
     axes_[static_cast<std::size_t>(k)] = axes[static_cast<std::size_t>(k)];
   motion_time_ = t[0];
+  start_center_known_ = a.has(prefix + "start_center");
+  if (start_center_known_) {
+    const auto c0 = a.get<Vec3>(prefix + "start_center");
+    if (c0.size() != 1 || !is_finite(c0[0]))
+      throw Error(fmt::format("checkpoint entry '{}start_center' does not hold one point", prefix));
+    start_center_ = c0[0];
+  }
   wear_volume_ = std::move(wear);
   reach_ = -1;
 }

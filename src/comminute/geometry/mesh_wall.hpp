@@ -53,6 +53,8 @@ class MeshWall : public Wall {
   Vec3 rotate_to_world(const Vec3& body) const;
   // Brings contacts out[first, end) from the body frame to the world; returns their count.
   int to_world(std::vector<WallContact>& out, std::size_t first) const;
+  // The pose at t_new from a motion with a closed-form pose (MotionModel::pose); false without.
+  bool place_exactly(double t_old, double t_new);
 
   MeshSurface mesh_;
   std::unique_ptr<MotionModel> motion_;
@@ -61,6 +63,8 @@ class MeshWall : public Wall {
   std::array<Vec3, 3> axes_{Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};  // columns of R
   Vec3 offset_;                                                            // T: world = R body + T
   double motion_time_ = 0;                                                 // s
+  Vec3 start_center_;  // m, the rotation centre at t = 0 (closed-form poses)
+  bool start_center_known_ = false;
   mutable Vec3 reach_center_;  // body-frame rotation centre of the cached reach
   mutable double reach_ = -1;  // m, largest vertex distance from it
 };

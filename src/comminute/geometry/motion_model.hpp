@@ -18,6 +18,13 @@ class MotionModel {
   virtual ~MotionModel() = default;
   // Velocity (m/s) of the rotation centre and angular velocity (rad/s) at time t (s).
   virtual void at(double t, Vec3& velocity, Vec3& angular_velocity) const = 0;
+  // A model whose pose is known in closed form (a linkage) returns true and sets, at time t, the
+  // displacement (m) of the rotation centre since t = 0 and the rotation vector (rad, axis times
+  // angle) of the body since t = 0 about that centre: a mesh wall then places itself exactly
+  // instead of integrating at(). Default: false (the pose is integrated).
+  virtual bool pose(double /*t*/, Vec3& /*displacement*/, Vec3& /*rotation*/) const {
+    return false;
+  }
 };
 
 using MotionRegistry = Registry<MotionModel, const CaseTable&>;

@@ -62,6 +62,31 @@ void add_outlets(const CaseTable& root, Simulation& sim) {
   sim.modules.push_back(std::make_unique<OutletModule>(std::move(specs)));
 }
 
+// The bound of a sampling plane: `radius` (a disc about `point`) or `size` = [a, b] with `u`, the
+// direction of side a (projected onto the plane), or neither (the infinite plane).
+void read_sampling_extent(const CaseTable& t, SamplingPlaneSpec& s) {
+  const bool disc = t.has("radius"), rectangle = t.has("size");
+  if (disc && rectangle) t.fail("size", "give one of 'radius' (a disc) or 'size' (a rectangle)");
+  if (disc) {
+    s.extent = SamplingPlaneSpec::Extent::disc;
+    s.radius = t.number("radius", kPositive);
+  } else if (rectangle) {
+    s.extent = SamplingPlaneSpec::Extent::rectangle;
+    const auto size = t.numbers("size", kPositive);
+    if (size.size() != 2) t.fail("size", "needs two side lengths [a, b] (m)");
+    s.half_u = 0.5 * size[0];
+    s.half_v = 0.5 * size[1];
+    if (!t.has("u")) t.fail("size", "a rectangle needs 'u' ([x, y, z]), the direction of side a");
+    const Vec3 u = t.vec3("u");
+    const Vec3 in_plane = u - dot(u, s.normal) * s.normal;
+    if (!(norm(in_plane) > 1e-9 * norm(u)))
+      t.fail("u", "the rectangle's side direction must not be along the plane's normal");
+    s.u = in_plane / norm(in_plane);
+  } else if (t.has("u")) {
+    t.fail("u", "'u' orients a rectangle: give 'size' too");
+  }
+}
+
 void add_sampling_planes(const CaseTable& root, Simulation& sim) {
   const auto tables = root.tables("sampling_planes");
   if (tables.empty()) return;
@@ -74,6 +99,8 @@ void add_sampling_planes(const CaseTable& root, Simulation& sim) {
     names.push_back(s.name);
     s.point = t.vec3("point");
     s.normal = unit_vector(t, "normal");
+    read_sampling_extent(t, s);
+    s.log = t.boolean("log", false);
     specs.push_back(s);
   }
   auto m = std::make_unique<SamplingPlaneModule>(std::move(specs));

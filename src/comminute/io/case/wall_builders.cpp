@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "comminute/geometry/prescribed_motion_wall.hpp"
 #include "comminute/geometry/wall_group.hpp"
 
 namespace comminute::io {
@@ -50,6 +51,22 @@ std::vector<std::unique_ptr<Wall>> build_walls(const CaseTable& t, std::size_t i
   if (t.has("rotation_center")) w->kinematics.center = t.vec3("rotation_center");
   if (!w->can_rotate() && norm2(w->kinematics.angular_velocity) > 0)
     t.fail("angular_velocity", fmt::format("a {} wall can translate but not rotate", w->type()));
+  // an analytic wall moved by a motion model (a mesh wall's factory read its table itself)
+  const auto mt = dynamic_cast<MeshWall*>(w.get()) ? std::nullopt : t.optional_table("motion");
+  if (mt) {
+    for (const char* k : {"velocity", "angular_velocity"})
+      if (t.has(k)) t.fail(k, "give the motion either here or in [walls.motion], not both");
+    std::unique_ptr<MotionModel> motion = make_motion(*mt);
+    if (!w->can_rotate()) {  // the keys of a model that would turn the wall
+      const std::string model = mt->string("type");
+      const std::string what = fmt::format("a {} wall can translate but not rotate", w->type());
+      if (model == "rotation") mt->fail("type", what);
+      if (model == "eccentric" && mt->number("swing_amplitude", Limits::any(), 0.0) != 0)
+        mt->fail("swing_amplitude", what);
+      if (mt->has("angular_velocity")) mt->fail("angular_velocity", what);
+    }
+    w = std::make_unique<PrescribedMotionWall>(std::move(w), std::move(motion));
+  }
   std::vector<std::unique_ptr<Wall>> out;
   out.push_back(std::move(w));
   return out;

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "comminute/bonds/bond_law.hpp"
+#include "comminute/bonds/bond_step.hpp"
 #include "comminute/bonds/mixed_mode.hpp"
 
 namespace comminute::bonds {
@@ -77,6 +78,11 @@ class BilinearCohesive final : public BondLaw {
     BondLoad load;
     load.force = -area * (tn * m.normal + k_soft * s.slip);
     return load;
+  }
+
+  BondStepSums update_range(const BondStep& step, std::size_t begin,
+                            std::size_t end) const override {
+    return update_bonds(*this, step, begin, end);
   }
 
   double stiffness(const BondState& s) const override {

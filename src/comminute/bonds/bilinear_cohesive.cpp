@@ -45,7 +45,10 @@ class BilinearCohesive final : public BondLaw {
     return s;
   }
 
-  BondLoad update(BondState& s, const BondMotion& m) const override {
+  BondLoad update(BondState& s, const BondMotion& m) const override { return advance(s, m); }
+
+  // update(), inlined into the loop of update_range (bond_step.hpp)
+  [[gnu::always_inline]] BondLoad advance(BondState& s, const BondMotion& m) const {
     if (s.failed != FailureMode::none) return {};
     const double area = std::numbers::pi * s.radius * s.radius;
     // the accumulated slip turns with the bond and stays perpendicular to it

@@ -98,17 +98,19 @@ using BondLawRegistry = Registry<BondLaw, const CaseTable&>;
 // to each vector a bond stores (inline: it runs for every bond in every step).
 class BondTurn {
  public:
-  BondTurn(const Vec3& a, const Vec3& b) : k_(cross(a, b)), c_(dot(a, b)) {}
+  BondTurn(const Vec3& a, const Vec3& b)
+      : k_(cross(a, b)), c_(dot(a, b)), per_1c_(c_ > -1.0 + 1e-12 ? 1.0 / (1.0 + c_) : 0.0) {}
   // Rodrigues' formula with k = a x b (|k| = sin θ), c = a·b = cos θ:
   // R v = c v + k x v + k (k·v) / (1 + c)
   Vec3 operator()(const Vec3& v) const {
     if (c_ <= -1.0 + 1e-12) return v;  // a half turn in one step: no rotation is defined
-    return c_ * v + cross(k_, v) + k_ * (dot(k_, v) / (1.0 + c_));
+    return c_ * v + cross(k_, v) + k_ * (dot(k_, v) * per_1c_);
   }
 
  private:
   Vec3 k_;
   double c_;
+  double per_1c_;  // 1 / (1 + c), once for every vector turned
 };
 
 // Rotates v by the rotation that takes unit vector a onto unit vector b (about a x b).

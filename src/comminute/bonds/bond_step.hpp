@@ -1,8 +1,8 @@
 #pragma once
 // The loop of one step over a range of bonds, shared by the bond laws: each law's update_range
-// instantiates it with its own (final) class, so that its update() is inlined into the loop
-// instead of one virtual call per bond. Per bond: the motion of its two particles, the law's
-// update, the force and the two torques the particles receive (added to them afterwards, per
+// instantiates it with its own class, whose advance() (what its update() does) is inlined into
+// the loop instead of one virtual call per bond. Per bond: the motion of its two particles, the
+// law's update, the force and the two torques the particles receive (added to them afterwards, per
 // particle in bond order, by BondsModule).
 #include <cstddef>
 
@@ -35,18 +35,22 @@ BondStepSums update_bonds(const Law& law, const BondStep& st, std::size_t begin,
     }
     const std::uint32_t i = st.slot_i[b], j = st.slot_j[b];
     BondState& s = st.state[b];
-    const Vec3 xi = st.x[i], xj = st.x[j];
-    const Vec3 d = xj - xi;
+    const Vec3 d = st.x[j] - st.x[i];
     BondMotion m;
     m.length = norm(d);
     m.normal = m.length > 0 ? d * (1.0 / m.length) : s.normal;
-    const Vec3 xc = bond_point(xi, st.radius[i], st.radius[j], m.normal, m.length);
+    const Vec3& n = m.normal;
+    // levers of the contact point (bond_point): x_c - x_i = a_i n, x_c - x_j = -a_j n
+    const double ai = st.radius[i] + 0.5 * (m.length - st.radius[i] - st.radius[j]);
+    const double aj = m.length - ai;
     const Vec3 wi = st.w[i], wj = st.w[j];
-    const Vec3 vc = st.v[j] + cross(wj, xc - xj) - st.v[i] - cross(wi, xc - xi);
-    m.slip_increment = (vc - dot(vc, m.normal) * m.normal) * st.dt;
+    // velocity of j's surface relative to i's at the contact point: v_j + w_j x (-a_j n) - v_i -
+    // w_i x (a_i n)
+    const Vec3 vc = st.v[j] - st.v[i] - cross(aj * wj + ai * wi, n);
+    m.slip_increment = (vc - dot(vc, n) * n) * st.dt;
     m.rotation_increment = (wj - wi) * st.dt;
     const double before = s.dissipated;
-    const BondLoad load = law.Law::update(s, m);  // qualified: no virtual dispatch
+    const BondLoad load = law.advance(s, m);  // the law's update(), inlined
     sums.released += s.dissipated - before;
     if (s.failed != FailureMode::none) {
       st.flag[b] = 2;
@@ -55,9 +59,12 @@ BondStepSums update_bonds(const Law& law, const BondStep& st, std::size_t begin,
       continue;
     }
     sums.elastic += s.strain_energy;
+    // moments of the force about the centres: (x_c - x_j) x F = -a_j n x F, (x_c - x_i) x F =
+    // a_i n x F
+    const Vec3 nf = cross(n, load.force);
     st.force[b] = load.force;
-    st.torque_j[b] = cross(xc - xj, load.force) + load.moment;
-    st.torque_i[b] = cross(xc - xi, load.force) + load.moment;
+    st.torque_j[b] = load.moment - aj * nf;
+    st.torque_i[b] = ai * nf + load.moment;
   }
   return sums;
 }

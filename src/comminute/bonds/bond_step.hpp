@@ -35,19 +35,15 @@ BondStepSums update_bonds(const Law& law, const BondStep& st, std::size_t begin,
     }
     const std::uint32_t i = st.slot_i[b], j = st.slot_j[b];
     BondState& s = st.state[b];
-    const Vec3 d = st.x[j] - st.x[i];
+    const Vec3 xi = st.x[i], xj = st.x[j];
+    const Vec3 d = xj - xi;
     BondMotion m;
     m.length = norm(d);
     m.normal = m.length > 0 ? d * (1.0 / m.length) : s.normal;
-    const Vec3& n = m.normal;
-    // levers of the contact point (bond_point): x_c - x_i = a_i n, x_c - x_j = -a_j n
-    const double ai = st.radius[i] + 0.5 * (m.length - st.radius[i] - st.radius[j]);
-    const double aj = m.length - ai;
+    const Vec3 xc = bond_point(xi, st.radius[i], st.radius[j], m.normal, m.length);
     const Vec3 wi = st.w[i], wj = st.w[j];
-    // velocity of j's surface relative to i's at the contact point: v_j + w_j x (-a_j n) - v_i -
-    // w_i x (a_i n)
-    const Vec3 vc = st.v[j] - st.v[i] - cross(aj * wj + ai * wi, n);
-    m.slip_increment = (vc - dot(vc, n) * n) * st.dt;
+    const Vec3 vc = st.v[j] + cross(wj, xc - xj) - st.v[i] - cross(wi, xc - xi);
+    m.slip_increment = (vc - dot(vc, m.normal) * m.normal) * st.dt;
     m.rotation_increment = (wj - wi) * st.dt;
     const double before = s.dissipated;
     const BondLoad load = law.advance(s, m);  // the law's update(), inlined
@@ -59,12 +55,9 @@ BondStepSums update_bonds(const Law& law, const BondStep& st, std::size_t begin,
       continue;
     }
     sums.elastic += s.strain_energy;
-    // moments of the force about the centres: (x_c - x_j) x F = -a_j n x F, (x_c - x_i) x F =
-    // a_i n x F
-    const Vec3 nf = cross(n, load.force);
     st.force[b] = load.force;
-    st.torque_j[b] = load.moment - aj * nf;
-    st.torque_i[b] = ai * nf + load.moment;
+    st.torque_j[b] = cross(xc - xj, load.force) + load.moment;
+    st.torque_i[b] = cross(xc - xi, load.force) + load.moment;
   }
   return sums;
 }

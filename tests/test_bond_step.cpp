@@ -44,19 +44,18 @@ std::size_t check_batch_equals_single(const BondLaw& law, double strain) {
   std::vector<BondState> single = state;
   std::vector<std::uint8_t> flag{0, 0, 1};
   std::vector<Vec3> force(3), ti(3), tj(3);
-  BondStep st;
-  st.x = sc.x.data();
-  st.v = sc.v.data();
-  st.w = sc.w.data();
-  st.radius = sc.radius.data();
-  st.slot_i = sc.si.data();
-  st.slot_j = sc.sj.data();
-  st.state = state.data();
-  st.flag = flag.data();
-  st.dt = 1e-6;
-  st.force = force.data();
-  st.torque_i = ti.data();
-  st.torque_j = tj.data();
+  const BondStep st{.x = sc.x.data(),
+                    .v = sc.v.data(),
+                    .w = sc.w.data(),
+                    .radius = sc.radius.data(),
+                    .slot_i = sc.si.data(),
+                    .slot_j = sc.sj.data(),
+                    .state = state.data(),
+                    .flag = flag.data(),
+                    .dt = 1e-6,
+                    .force = force.data(),
+                    .torque_i = ti.data(),
+                    .torque_j = tj.data()};
   const BondStepSums sums = law.update_range(st, 0, 3);
   double released = 0, elastic = 0;
   std::size_t failed = 0;

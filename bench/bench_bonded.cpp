@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
     rusage ru{};
     getrusage(RUSAGE_SELF, &ru);
     const Observables o = sim.observe();
-    std::size_t nb = 0, bond_bytes = 0;
+    std::size_t nb = 0, bond_bytes = 0, scratch_bytes = 0;
     if (b) {
       const bonds::BondList& l = b->bonds();
       nb = l.size();
@@ -72,17 +72,21 @@ int main(int argc, char** argv) {
       bond_bytes = l.id_i.capacity() * sizeof(std::uint64_t) * 2 +
                    l.slot_i.capacity() * sizeof(std::uint32_t) * 2 +
                    l.state.capacity() * sizeof(bonds::BondState);
+      scratch_bytes = b->scratch_bytes();
     }
     const double steps_d = static_cast<double>(steps);
     fmt::print(
         "N={} bonds={} bonds_per_sphere={:.2f} threads={} steps={} wall_s={:.3f} user_s={:.3f} "
         "steps_per_s_wall={:.1f} steps_per_cpu_s={:.1f} contacts={} wall_contacts={} "
-        "failed_bonds={} peak_rss_MB={:.0f} bond_list_bytes_per_bond={:.0f}\n",
+        "failed_bonds={} peak_rss_MB={:.0f} bond_list_bytes_per_bond={:.0f} "
+        "bond_scratch_bytes_per_bond={:.0f} kinetic_J={:.6e}\n",
         sim.particles.size(), nb,
         2.0 * static_cast<double>(nb) / static_cast<double>(sim.particles.size()),
         omp_get_max_threads(), steps, s, u, steps_d / s, steps_d / u, o.contacts, o.wall_contacts,
         b ? b->failures().size() : 0, static_cast<double>(ru.ru_maxrss) / 1024.0,
-        nb ? static_cast<double>(bond_bytes) / static_cast<double>(nb) : 0.0);
+        nb ? static_cast<double>(bond_bytes) / static_cast<double>(nb) : 0.0,
+        nb ? static_cast<double>(scratch_bytes) / static_cast<double>(nb) : 0.0,
+        o.kinetic_translational + o.kinetic_rotational);
     std::filesystem::remove_all(dir);
   } catch (const std::exception& e) {
     fmt::print(stderr, "error: {}\n", e.what());

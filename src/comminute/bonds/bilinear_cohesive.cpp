@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "comminute/bonds/bond_law.hpp"
+#include "comminute/bonds/bond_step.hpp"
 #include "comminute/bonds/mixed_mode.hpp"
 
 namespace comminute::bonds {
@@ -44,7 +45,10 @@ class BilinearCohesive final : public BondLaw {
     return s;
   }
 
-  BondLoad update(BondState& s, const BondMotion& m) const override {
+  BondLoad update(BondState& s, const BondMotion& m) const override { return advance(s, m); }
+
+  // update(), inlined into the loop of update_range (bond_step.hpp)
+  [[gnu::always_inline]] BondLoad advance(BondState& s, const BondMotion& m) const {
     if (s.failed != FailureMode::none) return {};
     const double area = std::numbers::pi * s.radius * s.radius;
     // the accumulated slip turns with the bond and stays perpendicular to it
@@ -77,6 +81,11 @@ class BilinearCohesive final : public BondLaw {
     BondLoad load;
     load.force = -area * (tn * m.normal + k_soft * s.slip);
     return load;
+  }
+
+  BondStepSums update_range(const BondStep& step, std::size_t begin,
+                            std::size_t end) const override {
+    return update_bonds(*this, step, begin, end);
   }
 
   double stiffness(const BondState& s) const override {

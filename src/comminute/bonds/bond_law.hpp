@@ -48,6 +48,32 @@ struct BondLoad {
   Vec3 moment;  // N m, on j besides the moment of the force (i gets -moment)
 };
 
+// One step of a range of bonds at once (bond_step.hpp runs it): what the bonds read of the
+// particles and of themselves, and per bond what the step gives back. Plain arrays, indexed by
+// bond (slots, states, flags, results) or by particle slot (x, v, w, radius).
+struct BondStep {
+  const Vec3* x = nullptr;
+  const Vec3* v = nullptr;  // at the half step: v dt is this step's displacement
+  const Vec3* w = nullptr;
+  const double* radius = nullptr;
+  const std::uint32_t* slot_i = nullptr;
+  const std::uint32_t* slot_j = nullptr;
+  BondState* state = nullptr;
+  std::uint8_t* flag = nullptr;  // in: 1 = gone (its particle was removed; skipped), else 0;
+                                 // out: 2 = failed in this step
+  double dt = 0;
+  Vec3* force = nullptr;     // N, on j (i gets -force); zero for a skipped or failed bond
+  Vec3* torque_i = nullptr;  // N m, i gets -torque_i (moment of the force about x_i + moment)
+  Vec3* torque_j = nullptr;  // N m, j gets +torque_j
+};
+
+// What a range of bonds adds up to in one step (summed in bond order within the range).
+struct BondStepSums {
+  double released = 0;     // J, dissipated in this step
+  double elastic = 0;      // J, strain energy held by the bonds still intact
+  std::size_t failed = 0;  // bonds that failed in this step
+};
+
 class BondLaw {
  public:
   virtual ~BondLaw() = default;
@@ -58,6 +84,10 @@ class BondLaw {
   // Advances the bond by one step: updates its state (damage, stored force and moment, strain
   // energy, dissipated energy, failure) and returns the load on j. A failed bond carries nothing.
   virtual BondLoad update(BondState& s, const BondMotion& m) const = 0;
+  // update() for bonds [begin, end) of a step, with their motion from the particles (one call
+  // per range: the law's own update is inlined in the loop, bond_step.hpp).
+  virtual BondStepSums update_range(const BondStep& step, std::size_t begin,
+                                    std::size_t end) const = 0;
   // Largest stiffness of the bond (N/m), for the time-step check.
   virtual double stiffness(const BondState& s) const = 0;
 };
@@ -68,17 +98,19 @@ using BondLawRegistry = Registry<BondLaw, const CaseTable&>;
 // to each vector a bond stores (inline: it runs for every bond in every step).
 class BondTurn {
  public:
-  BondTurn(const Vec3& a, const Vec3& b) : k_(cross(a, b)), c_(dot(a, b)) {}
+  BondTurn(const Vec3& a, const Vec3& b)
+      : k_(cross(a, b)), c_(dot(a, b)), per_1c_(c_ > -1.0 + 1e-12 ? 1.0 / (1.0 + c_) : 0.0) {}
   // Rodrigues' formula with k = a x b (|k| = sin θ), c = a·b = cos θ:
   // R v = c v + k x v + k (k·v) / (1 + c)
   Vec3 operator()(const Vec3& v) const {
     if (c_ <= -1.0 + 1e-12) return v;  // a half turn in one step: no rotation is defined
-    return c_ * v + cross(k_, v) + k_ * (dot(k_, v) / (1.0 + c_));
+    return c_ * v + cross(k_, v) + k_ * (dot(k_, v) * per_1c_);
   }
 
  private:
   Vec3 k_;
   double c_;
+  double per_1c_;  // 1 / (1 + c), once for every vector turned
 };
 
 // Rotates v by the rotation that takes unit vector a onto unit vector b (about a x b).

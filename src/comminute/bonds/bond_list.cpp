@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "comminute/core/error.hpp"
+#include "comminute/engine/parallel_threshold.hpp"
 
 namespace comminute::bonds {
 
@@ -24,14 +25,24 @@ void BondList::add(std::uint64_t a, std::uint32_t sa, std::uint64_t b, std::uint
   state.push_back(s);
 }
 
+bool BondList::current(const ParticleStore& p) const {
+  const std::size_t n = p.owned();  // ghosts (periodic images) are never bonded
+  const std::uint64_t* id = p.id.data();
+  auto valid = [&](std::uint32_t slot, std::uint64_t want) { return slot < n && id[slot] == want; };
+  const auto nb = static_cast<std::int64_t>(size());
+  bool ok = true;
+#pragma omp parallel for schedule(static) reduction(&& : ok) if (size() >= kParallelMin)
+  for (std::int64_t bi = 0; bi < nb; ++bi) {
+    const auto b = static_cast<std::size_t>(bi);
+    ok = ok && valid(slot_i[b], id_i[b]) && valid(slot_j[b], id_j[b]);
+  }
+  return ok;
+}
+
 std::vector<std::size_t> BondList::locate(const ParticleStore& p) {
   const std::size_t n = p.owned();  // ghosts (periodic images) are never bonded
-  auto valid = [&](std::uint32_t slot, std::uint64_t id) { return slot < n && p.id[slot] == id; };
-  bool stale = false;
-  for (std::size_t b = 0; b < size() && !stale; ++b)
-    stale = !valid(slot_i[b], id_i[b]) || !valid(slot_j[b], id_j[b]);
   std::vector<std::size_t> lost;
-  if (!stale) return lost;
+  if (current(p)) return lost;
   std::vector<std::pair<std::uint64_t, std::uint32_t>> by_id(n);
   for (std::size_t s = 0; s < n; ++s) by_id[s] = {p.id[s], static_cast<std::uint32_t>(s)};
   std::sort(by_id.begin(), by_id.end());

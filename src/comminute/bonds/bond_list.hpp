@@ -25,6 +25,8 @@ class BondList {
   void reserve(std::size_t n);
   void add(std::uint64_t a, std::uint32_t sa, std::uint64_t b, std::uint32_t sb,
            const BondState& s);
+  // Whether every cached slot still holds its particle (checked on all threads).
+  bool current(const ParticleStore& p) const;
   // Brings the slots up to date; returns the bonds one of whose particles is gone (in order).
   std::vector<std::size_t> locate(const ParticleStore& p);
   // Removes the bonds flagged in `gone` (one flag per bond), keeping the order of the others.

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "comminute/bonds/bond_step.hpp"
 #include "comminute/core/error.hpp"
 #include "comminute/engine/contact_stress.hpp"
 #include "comminute/engine/parallel_threshold.hpp"
@@ -27,6 +28,7 @@ void BondsModule::post_force(Simulation& sim) {
 
 void BondsModule::create_bonds(Simulation& sim) {
   created_ = true;
+  indexed_ = false;
   const ParticleStore& p = sim.particles;
   const NeighborList& pairs = sim.pairs();
   if (options_.gap_tolerance > sim.options.skin)
@@ -90,73 +92,136 @@ void BondsModule::fail(Simulation& sim, std::size_t b, FailureCause cause, const
   gone_[b] = 1;
 }
 
+namespace {
+// Bonds per range of the step's loop: the ranges and their sums do not depend on the thread
+// count, so neither do the ledger's sums.
+constexpr std::size_t kRange = 2048;
+}  // namespace
+
+std::size_t BondsModule::scratch_bytes() const {
+  return gone_.capacity() +
+         sizeof(Vec3) * (force_.capacity() + torque_i_.capacity() + torque_j_.capacity()) +
+         sizeof(BondStepSums) * range_sums_.capacity() +
+         sizeof(std::uint32_t) * (first_.capacity() + entry_.capacity());
+}
+
+void BondsModule::index_by_particle(std::size_t n) {
+  const std::size_t nb = bonds_.size();
+  first_.assign(n + 1, 0);
+  for (std::size_t b = 0; b < nb; ++b) {
+    ++first_[bonds_.slot_i[b] + 1];
+    ++first_[bonds_.slot_j[b] + 1];
+  }
+  for (std::size_t k = 0; k < n; ++k) first_[k + 1] += first_[k];
+  entry_.resize(2 * nb);
+  std::vector<std::uint32_t> next(first_.begin(), first_.end() - 1);
+  for (std::size_t b = 0; b < nb; ++b) {
+    const auto e = static_cast<std::uint32_t>(b << 1);
+    entry_[next[bonds_.slot_i[b]]++] = e;
+    entry_[next[bonds_.slot_j[b]]++] = e | 1u;
+  }
+  indexed_ = true;
+}
+
+void BondsModule::add_to_particles(ParticleStore& p) const {
+  const auto n = static_cast<std::int64_t>(first_.size() - 1);
+#pragma omp parallel for schedule(static) if (bonds_.size() >= kParallelMin)
+  for (std::int64_t ki = 0; ki < n; ++ki) {
+    const auto k = static_cast<std::size_t>(ki);
+    const std::uint32_t end = first_[k + 1];
+    if (first_[k] == end) continue;
+    Vec3 f = p.f[k], t = p.t[k];
+    for (std::uint32_t e = first_[k]; e < end; ++e) {
+      const std::uint32_t b = entry_[e] >> 1;
+      if (entry_[e] & 1u) {
+        f += force_[b];
+        t += torque_j_[b];
+      } else {
+        f -= force_[b];
+        t -= torque_i_[b];
+      }
+    }
+    p.f[k] = f;
+    p.t[k] = t;
+  }
+}
+
 void BondsModule::apply(Simulation& sim) {
   ParticleStore& p = sim.particles;
-  gone_.assign(bonds_.size(), 0);
-  for (std::size_t b : bonds_.locate(p)) {
-    const std::uint32_t k =
-        bonds_.slot_i[b] != BondList::none ? bonds_.slot_i[b] : bonds_.slot_j[b];
-    fail(sim, b, FailureCause::particle_removed, k != BondList::none ? p.x[k] : Vec3{});
-  }
-  // First the bonds' laws, each bond on its own (in parallel threads for many bonds), then their
-  // forces onto the particles in bond order, so that sums and results do not depend on threads.
   const std::size_t nb = bonds_.size();
-  loads_.resize(nb);
-  points_.resize(nb);
-  released_.resize(nb);
-  const double dt = sim.dt;
-  const auto n_bonds = static_cast<std::int64_t>(nb);
-#pragma omp parallel for schedule(static) if (nb >= kParallelMin)
-  for (std::int64_t bi = 0; bi < n_bonds; ++bi) {
-    const auto b = static_cast<std::size_t>(bi);
-    if (gone_[b]) continue;
-    const std::uint32_t i = bonds_.slot_i[b], j = bonds_.slot_j[b];
-    BondState& s = bonds_.state[b];
-    const Vec3 d = p.x[j] - p.x[i];
-    BondMotion m;
-    m.length = norm(d);
-    m.normal = m.length > 0 ? d / m.length : s.normal;
-    // the contact point: the middle of the gap (or overlap) between the two surfaces
-    const Vec3 xc =
-        p.x[i] + (p.radius[i] + 0.5 * (m.length - p.radius[i] - p.radius[j])) * m.normal;
-    // velocities are at the half step, so v dt is this step's displacement
-    const Vec3 vc = p.v[j] + cross(p.w[j], xc - p.x[j]) - p.v[i] - cross(p.w[i], xc - p.x[i]);
-    m.slip_increment = (vc - dot(vc, m.normal) * m.normal) * dt;
-    m.rotation_increment = (p.w[j] - p.w[i]) * dt;
-    const double before = s.dissipated;
-    loads_[b] = law_->update(s, m);
-    points_[b] = xc;
-    released_[b] = s.dissipated - before;
+  gone_.assign(nb, 0);
+  if (!indexed_ || first_.size() != p.owned() + 1 || !bonds_.current(p)) {
+    for (std::size_t b : bonds_.locate(p)) {
+      const std::uint32_t k =
+          bonds_.slot_i[b] != BondList::none ? bonds_.slot_i[b] : bonds_.slot_j[b];
+      fail(sim, b, FailureCause::particle_removed, k != BondList::none ? p.x[k] : Vec3{});
+    }
+    if (std::find(gone_.begin(), gone_.end(), std::uint8_t{1}) != gone_.end()) {
+      bonds_.remove(gone_);  // their particles are gone: no slots to act on
+      gone_.assign(bonds_.size(), 0);
+    }
+    index_by_particle(p.owned());
   }
+  // First the bond laws, range by range on all threads, then the loads onto the particles, per
+  // particle in bond order: sums and results do not depend on the thread count.
+  const std::size_t n_bonds = bonds_.size();
+  force_.resize(n_bonds);
+  torque_i_.resize(n_bonds);
+  torque_j_.resize(n_bonds);
+  const std::size_t ranges = (n_bonds + kRange - 1) / kRange;
+  range_sums_.assign(ranges, {});
+  BondStep st;
+  st.x = p.x.data();
+  st.v = p.v.data();
+  st.w = p.w.data();
+  st.radius = p.radius.data();
+  st.slot_i = bonds_.slot_i.data();
+  st.slot_j = bonds_.slot_j.data();
+  st.state = bonds_.state.data();
+  st.flag = gone_.data();
+  st.dt = sim.dt;
+  st.force = force_.data();
+  st.torque_i = torque_i_.data();
+  st.torque_j = torque_j_.data();
+  const BondLaw& law = *law_;
+  const auto n_ranges = static_cast<std::int64_t>(ranges);
+#pragma omp parallel for schedule(static) if (n_bonds >= kParallelMin)
+  for (std::int64_t r = 0; r < n_ranges; ++r) {
+    const std::size_t begin = static_cast<std::size_t>(r) * kRange;
+    range_sums_[static_cast<std::size_t>(r)] =
+        law.update_range(st, begin, std::min(begin + kRange, n_bonds));
+  }
+  add_to_particles(p);
   double elastic = 0;
+  std::size_t failed = 0;
+  for (const BondStepSums& r : range_sums_) {
+    sim.ledger.bond_dissipated += r.released;
+    elastic += r.elastic;
+    failed += r.failed;
+  }
+  sim.ledger.bond_elastic = elastic;
   // a statistics module measuring this step's Love–Weber stress counts the bonds' forces too: a
   // bond transmits force between its particles like a contact, at its contact point
   ContactStress* stress = sim.contacts().stress();
-  if (stress && !stress->armed()) stress = nullptr;
-  for (std::size_t b = 0; b < nb; ++b) {
-    if (gone_[b]) continue;
-    const std::uint32_t i = bonds_.slot_i[b], j = bonds_.slot_j[b];
-    const BondState& s = bonds_.state[b];
-    const BondLoad& load = loads_[b];
-    const Vec3& xc = points_[b];
-    sim.ledger.bond_dissipated += released_[b];
-    if (s.failed != FailureMode::none) {
-      fail(sim, b, s.failed == FailureMode::tensile ? FailureCause::tensile : FailureCause::shear,
-           xc);
-      continue;
+  if (stress && stress->armed()) {
+    for (std::size_t b = 0; b < n_bonds; ++b) {
+      if (gone_[b]) continue;
+      const std::uint32_t i = bonds_.slot_i[b], j = bonds_.slot_j[b];
+      const Vec3 xc = bond_point(st, b);
+      // the moment of the bond is a couple: no part in the symmetric stress
+      stress->add(j, force_[b], xc - p.x[j]);
+      stress->add(i, -force_[b], xc - p.x[i]);
     }
-    p.f[j] += load.force;
-    p.f[i] -= load.force;
-    p.t[j] += cross(xc - p.x[j], load.force) + load.moment;
-    p.t[i] -= cross(xc - p.x[i], load.force) + load.moment;
-    if (stress) {  // the moment load.moment is a couple: no part in the symmetric stress
-      stress->add(j, load.force, xc - p.x[j]);
-      stress->add(i, -load.force, xc - p.x[i]);
-    }
-    elastic += s.strain_energy;
   }
-  sim.ledger.bond_elastic = elastic;
-  if (std::find(gone_.begin(), gone_.end(), std::uint8_t{1}) != gone_.end()) bonds_.remove(gone_);
+  if (failed == 0) return;
+  for (std::size_t b = 0; b < n_bonds; ++b) {
+    if (gone_[b] != 2) continue;
+    const BondState& s = bonds_.state[b];
+    fail(sim, b, s.failed == FailureMode::tensile ? FailureCause::tensile : FailureCause::shear,
+         bond_point(st, b));
+  }
+  bonds_.remove(gone_);
+  index_by_particle(p.owned());
 }
 
 void BondsModule::save(Archive& a) const {
@@ -170,6 +235,7 @@ void BondsModule::save(Archive& a) const {
 
 void BondsModule::load(const Archive& a) {
   bonds_.load(a, "bonds/list/");
+  indexed_ = false;
   rng_.set_state(a.get_value<Rng::State>("bonds/rng"));
   created_ = a.get_value<std::uint8_t>("bonds/created") != 0;
   failures_ = a.get<BondFailure>("bonds/failures");

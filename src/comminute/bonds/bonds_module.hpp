@@ -55,6 +55,8 @@ class BondsModule final : public Module, public SeriesSource {
   const BondList& bonds() const { return bonds_; }
   const std::vector<BondFailure>& failures() const { return failures_; }
   bool created() const { return created_; }
+  // Bytes of the per-step scratch at its capacity (flags, loads, per-particle bond index).
+  std::size_t scratch_bytes() const;
   // Makes the bonds now (post_force does it at create_at); public for tests and builders.
   void create_bonds(Simulation& sim);
 
@@ -70,10 +72,20 @@ class BondsModule final : public Module, public SeriesSource {
   std::vector<BondFailure> failures_;
   std::vector<BondSample> samples_;
   std::vector<BondDamageRow> damage_rows_;
-  std::vector<std::uint8_t> gone_;  // scratch: bonds to remove this step
-  std::vector<BondLoad> loads_;     // scratch: this step's load of each bond
-  std::vector<Vec3> points_;        // scratch: this step's contact point of each bond (m)
-  std::vector<double> released_;    // scratch: energy each bond dissipated this step (J)
+  void index_by_particle(std::size_t n);
+  void add_to_particles(ParticleStore& p) const;
+
+  // Scratch of a step, per bond: removal flag (1: particle gone, 2: failed), the force on j (N)
+  // and the torques on i and j (N m); per range of kRange bonds, what the range adds up to.
+  std::vector<std::uint8_t> gone_;
+  std::vector<Vec3> force_, torque_i_, torque_j_;
+  std::vector<BondStepSums> range_sums_;
+  // Each particle's bonds, in bond order (CSR: bonds of slot k are entries first_[k] ..
+  // first_[k + 1], entry = bond << 1 | 1 where k is the bond's j): the loads are added per
+  // particle on all threads in the order of a serial pass over the bonds. Rebuilt when bonds
+  // are made or removed or the slots move.
+  std::vector<std::uint32_t> first_, entry_;
+  bool indexed_ = false;
 };
 
 }  // namespace comminute::bonds

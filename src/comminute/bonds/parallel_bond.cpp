@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "comminute/bonds/bond_law.hpp"
+#include "comminute/bonds/bond_step.hpp"
 
 namespace comminute::bonds {
 namespace {
@@ -21,7 +22,9 @@ class ParallelBond final : public BondLaw {
         tau_(t.number("shear_strength", Limits::positive())),
         sigma_sd_(t.number("tensile_strength_sd", Limits::non_negative(), 0.0)),
         tau_sd_(t.number("shear_strength_sd", Limits::non_negative(), 0.0)),
-        lambda_(t.number("radius_multiplier", Limits::positive(), 1.0)) {}
+        lambda_(t.number("radius_multiplier", Limits::positive(), 1.0)),
+        per_kn_(1.0 / kn_),
+        per_ks_(1.0 / ks_) {}
 
   std::string name() const override { return "parallel_bond"; }
 
@@ -37,12 +40,19 @@ class ParallelBond final : public BondLaw {
     return s;
   }
 
-  BondLoad update(BondState& s, const BondMotion& m) const override {
+  BondLoad update(BondState& s, const BondMotion& m) const override { return advance(s, m); }
+
+  // update(), inlined into the loop of update_range (bond_step.hpp)
+  [[gnu::always_inline]] BondLoad advance(BondState& s, const BondMotion& m) const {
     if (s.failed != FailureMode::none) return {};
     const double r = s.radius;
     const double area = std::numbers::pi * r * r;
-    const double inertia = std::numbers::pi * r * r * r * r / 4;  // I = πR̄⁴/4
-    const double polar = 2 * inertia;                             // J = πR̄⁴/2
+    const double inertia = 0.25 * area * r * r;  // I = πR̄⁴/4
+    const double polar = 2 * inertia;            // J = πR̄⁴/2
+    // one division per bond: 1/A, then 1/I = 4π/A², 1/J = 2π/A²
+    const double per_area = 1.0 / area;
+    const double per_polar = 2 * std::numbers::pi * per_area * per_area;
+    const double per_inertia = 2 * per_polar;
     // stored shear force and moment turn with the bond into the new frame
     const BondTurn turn(s.normal, m.normal);
     s.shear_force = turn(s.shear_force);
@@ -57,18 +67,20 @@ class ParallelBond final : public BondLaw {
     s.shear_force -= dot(s.shear_force, n) * n;
     s.moment -= ks_ * polar * twist + kn_ * inertia * bend;
     // normal force on j from the total elongation (tension pulls j towards i)
-    const double tension = kn_ * area * (m.length - s.length0);
+    const double elongation = m.length - s.length0;
+    const double tension = kn_ * area * elongation;
     const double mn = dot(s.moment, n);
     const Vec3 ms = s.moment - mn * n;
-    s.strain_energy =
-        0.5 * (tension * tension / (kn_ * area) + norm2(s.shear_force) / (ks_ * area) +
-               mn * mn / (ks_ * polar) + norm2(ms) / (kn_ * inertia));
+    const double fs2 = norm2(s.shear_force), ms2 = norm2(ms);
+    // ½ (F̄n²/(k̄n A) + |F̄s|²/(k̄s A) + M̄n²/(k̄s J) + |M̄s|²/(k̄n I)), F̄n²/(k̄n A) = F̄n δ
+    s.strain_energy = 0.5 * (tension * elongation + fs2 * per_area * per_ks_ +
+                             mn * mn * per_polar * per_ks_ + ms2 * per_inertia * per_kn_);
     // Potyondy & Cundall, Int. J. Rock Mech. Min. Sci. 41 (2004) 1329: σ = -F̄n/A + |M̄s| R̄/I, τ =
     // |F̄s|/A + |M̄n| R̄/J
-    const double sigma = tension / area + norm(ms) * r / inertia;
-    const double tau = norm(s.shear_force) / area + std::abs(mn) * r / polar;
-    const double load_t = sigma / s.tensile_strength, load_s = tau / s.shear_strength;
-    if (load_t >= 1.0 || load_s >= 1.0) {
+    const double sigma = tension * per_area + std::sqrt(ms2) * r * per_inertia;
+    const double tau = std::sqrt(fs2) * per_area + std::abs(mn) * r * per_polar;
+    if (sigma >= s.tensile_strength || tau >= s.shear_strength) {
+      const double load_t = sigma / s.tensile_strength, load_s = tau / s.shear_strength;
       s.failed = load_t >= load_s ? FailureMode::tensile : FailureMode::shear;
       s.damage = 1.0;
       s.dissipated += s.strain_energy;  // the strain energy is released when the bond fails
@@ -78,6 +90,11 @@ class ParallelBond final : public BondLaw {
       return {};
     }
     return {-tension * n + s.shear_force, s.moment};
+  }
+
+  BondStepSums update_range(const BondStep& step, std::size_t begin,
+                            std::size_t end) const override {
+    return update_bonds(*this, step, begin, end);
   }
 
   double stiffness(const BondState& s) const override {
@@ -94,6 +111,7 @@ class ParallelBond final : public BondLaw {
   }
 
   double kn_, ks_, sigma_, tau_, sigma_sd_, tau_sd_, lambda_;
+  double per_kn_, per_ks_;  // 1/k̄n, 1/k̄s (m/Pa)
 };
 
 std::unique_ptr<BondLaw> make(const CaseTable& t) {

@@ -9,6 +9,7 @@
 #include "comminute/bonds/grain_placement.hpp"
 #include "comminute/core/error.hpp"
 #include "comminute/core/units.hpp"
+#include "comminute/engine/insertion.hpp"
 #include "comminute/engine/simulation.hpp"
 
 namespace comminute::bonds {
@@ -127,12 +128,7 @@ std::uint64_t GrainPourModule::place(Simulation& sim, std::uint64_t n) {
 void GrainPourModule::pre_force(Simulation& sim) {
   if (done() || sim.time < next_time_ || sim.time > spec_.end + spec_.interval) return;
   next_time_ += spec_.interval;
-  const double t = std::min(sim.time, spec_.end) - spec_.start;
-  const double due_real = std::floor(spec_.rate * t + 1e-9);  // checked before the conversion
-  auto due = std::isfinite(due_real) && due_real > 0
-                 ? static_cast<std::uint64_t>(std::min(due_real, 1e18))
-                 : std::uint64_t{0};
-  if (spec_.count > 0) due = std::min(due, spec_.count);
+  const std::uint64_t due = pour_due(spec_.rate, spec_.start, spec_.end, sim.time, spec_.count);
   if (due <= poured()) return;
   place(sim, due - poured());
   if (poured() < due && !done() && !warned_full_) {

@@ -236,6 +236,13 @@ TEST(GrainPour, OrientationsAreIsotropic) {
   Poured c(text);
   while (c.pour->poured() < 3000 && c.sim().time < 3e-3) c.sim().step();
   ASSERT_EQ(c.pour->poured(), 3000u);
+  // these came in at the first step, before that step's bond sweep (create_at = 0): the sweep
+  // finds the same pairs and bonds none of them twice
+  std::size_t template_bonds = 0;
+  for (const auto& g : c.pour->grains())
+    template_bonds += c.pour->grain_template(g.templ).bonds.size();
+  EXPECT_EQ(c.pour->grains().front().time, c.sim().dt);
+  EXPECT_EQ(c.bonds->bonds().size(), template_bonds);
   const double n = 3000;
   double mean[3][3] = {}, square[3][3] = {};
   for (const auto& g : c.pour->grains()) {

@@ -62,23 +62,15 @@ void BondsModule::create_bonds(Simulation& sim) {
     found.emplace_back(p.id[i], p.id[j], i, j);
   }
   std::sort(found.begin(), found.end());
+  // pairs bonded already (a pour bonds its grains when it inserts them) are not bonded twice
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> bonded;
+  for (std::size_t b = 0; b < bonds_.size(); ++b)
+    bonded.emplace_back(std::min(bonds_.id_i[b], bonds_.id_j[b]),
+                        std::max(bonds_.id_i[b], bonds_.id_j[b]));
+  std::sort(bonded.begin(), bonded.end());
   bonds_.reserve(bonds_.size() + found.size());  // made once: no spare capacity
-  for (const auto& [a, b, i, j] : found) {
-    const Vec3 d = p.x[j] - p.x[i];
-    const double length = norm(d);
-    if (!(length > 0)) continue;  // coincident centres: no direction to bond along
-    const BondState s = law_->create(p.radius[i], p.radius[j], length, d / length, rng_);
-    // velocity Verlet is stable for ω dt < 2; ω² ≤ 4 k / m covers the axial, shear, bending and
-    // twist modes of two solid spheres joined by the bond
-    const double m = std::min(p.mass[i], p.mass[j]);
-    const double limit = std::sqrt(m / (4 * law_->stiffness(s)));
-    if (sim.dt > limit)
-      throw SimulationError(fmt::format(
-          "the bond between particles {} and {} needs a time step of at most {:.4g} s (it is "
-          "{:.4g} s): set [simulation] time_step",
-          a, b, limit, sim.dt));
-    bonds_.add(a, i, b, j, s);
-  }
+  for (const auto& [a, b, i, j] : found)
+    if (!std::binary_search(bonded.begin(), bonded.end(), std::pair{a, b})) make_bond(sim, i, j);
 }
 
 void BondsModule::fail(Simulation& sim, std::size_t b, FailureCause cause, const Vec3& at) {

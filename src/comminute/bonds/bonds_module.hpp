@@ -5,6 +5,7 @@
 // law for its force and moment, adds them to the two particles (the contact law acts in parallel),
 // removes failed bonds and logs each failure. Energy: the strain energy held in the bonds and the
 // energy they dissipated are booked in the engine's ledger (bond_elastic, bond_dissipated).
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -59,9 +60,16 @@ class BondsModule final : public Module, public SeriesSource {
   std::size_t scratch_bytes() const;
   // Makes the bonds now (post_force does it at create_at); public for tests and builders.
   void create_bonds(Simulation& sim);
+  // Bonds the listed pairs of particle slots now, with this module's law (a grain template's
+  // pairs when a pour inserts a grain: bonds/grain_pour.hpp). Each pair is bonded once: a later
+  // create_bonds() skips pairs that are bonded already. Throws SimulationError when a bond needs
+  // a smaller time step.
+  void bond_pairs(Simulation& sim, const std::vector<std::array<std::uint32_t, 2>>& slots);
 
  private:
   void apply(Simulation& sim);
+  // Bonds slots i and j (ids a < b) with the law's new state; checks the time step.
+  void make_bond(Simulation& sim, std::uint32_t i, std::uint32_t j);
   void fail(Simulation& sim, std::size_t b, FailureCause cause, const Vec3& at);
 
   std::unique_ptr<BondLaw> law_;

@@ -45,18 +45,33 @@ void GrainBreakageModule::setup(Simulation& sim) {
   const ParticleStore& p = sim.particles;
   grain_field_ = p.field_index("grain");
   layer_field_ = p.field_index("layer");
-  const auto& g = p.field(grain_field_);
-  const auto& l = p.field(layer_field_);
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < p.owned(); ++i)
-    if (g[i] >= 0) n = std::max(n, static_cast<std::size_t>(g[i]) + 1);
-  grain_mass_.assign(n, 0);
-  grain_volume_.assign(n, 0);
-  grain_layer_.assign(n, 0);
+  grain_mass_.clear();
+  grain_volume_.clear();
+  grain_layer_.clear();
   solid_volume_ = 0;
   sphere_volume_ = 0;
+  count_new_grains(sim);
+  if (!options_.piston.empty()) {
+    piston_ = wall_index(sim, options_.piston);
+    floor_ = wall_index(sim, options_.floor);
+  }
+}
+
+void GrainBreakageModule::count_new_grains(const Simulation& sim) {
+  const ParticleStore& p = sim.particles;
+  counted_next_id_ = p.next_id();
+  const auto& g = p.field(grain_field_);
+  const auto& l = p.field(layer_field_);
+  const std::size_t known = grain_mass_.size();
+  std::size_t n = known;
+  for (std::size_t i = 0; i < p.owned(); ++i)
+    if (g[i] >= 0) n = std::max(n, static_cast<std::size_t>(g[i]) + 1);
+  if (n == known) return;
+  grain_mass_.resize(n, 0);
+  grain_volume_.resize(n, 0);
+  grain_layer_.resize(n, 0);
   for (std::size_t i = 0; i < p.owned(); ++i) {
-    if (g[i] < 0) continue;
+    if (g[i] < 0 || static_cast<std::size_t>(g[i]) < known) continue;
     const auto k = static_cast<std::size_t>(g[i]);
     const double v = p.mass[i] / sim.materials.material(p.material[i]).density;
     grain_mass_[k] += p.mass[i];
@@ -65,11 +80,7 @@ void GrainBreakageModule::setup(Simulation& sim) {
     solid_volume_ += v;
     sphere_volume_ += 4.0 / 3.0 * std::numbers::pi * std::pow(p.radius[i], 3);
   }
-  if (broken_.size() != n) broken_.assign(n, 0);
-  if (!options_.piston.empty()) {
-    piston_ = wall_index(sim, options_.piston);
-    floor_ = wall_index(sim, options_.floor);
-  }
+  broken_.resize(n, 0);  // a restart keeps the loaded flags
 }
 
 GrainBreakageModule::Fragments GrainBreakageModule::fragments(const Simulation& sim) const {
@@ -112,6 +123,7 @@ std::vector<double> GrainBreakageModule::largest_fractions(const Simulation& sim
 }
 
 void GrainBreakageModule::post_force(Simulation& sim) {
+  if (sim.particles.next_id() != counted_next_id_) count_new_grains(sim);
   const auto& log = bonds_.failures();
   if (log.size() == failures_seen_) return;
   const ParticleStore& p = sim.particles;
@@ -169,6 +181,7 @@ BedSample GrainBreakageModule::bed(const Simulation& sim) const {
 }
 
 void GrainBreakageModule::sample(const Simulation& sim) {
+  if (sim.particles.next_id() != counted_next_id_) count_new_grains(sim);
   std::vector<std::uint64_t> grains, broken;
   for (std::size_t k = 0; k < grain_mass_.size(); ++k) {
     const std::size_t l = grain_layer_[k];

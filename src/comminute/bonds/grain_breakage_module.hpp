@@ -81,6 +81,9 @@ class GrainBreakageModule final : public Module, public SeriesSource {
     std::vector<std::uint64_t> spheres;
   };
   Fragments fragments(const Simulation& sim) const;
+  // Counts the grains whose id is beyond those counted so far (all at setup; later the grains a
+  // pour brings in), when particles were added since the last count.
+  void count_new_grains(const Simulation& sim);
 
   const BondsModule& bonds_;
   GrainBreakageOptions options_;
@@ -88,6 +91,7 @@ class GrainBreakageModule final : public Module, public SeriesSource {
   std::vector<double> grain_mass_, grain_volume_;
   std::vector<std::uint64_t> grain_layer_;
   double solid_volume_ = 0, sphere_volume_ = 0;
+  std::uint64_t counted_next_id_ = 0;  // the store's next id at the last count
   int piston_ = -1, floor_ = -1;
   // state (checkpointed)
   std::vector<std::uint8_t> broken_;

@@ -42,6 +42,7 @@ inline constexpr std::uint64_t calibration = 5;
 inline constexpr std::uint64_t pbm = 6;
 inline constexpr std::uint64_t bonds = 7;     // bond strength scatter
 inline constexpr std::uint64_t clusters = 8;  // grain packings and placement (+ 16 per [[insert]])
+inline constexpr std::uint64_t grain_pour = 9;  // poured grains' places, orientations (+ 16 per)
 }  // namespace rng_stream
 
 }  // namespace comminute

@@ -133,15 +133,19 @@ void InsertionModule::setup(Simulation& sim) {
         spec_.label, inserted_, n));
 }
 
-void InsertionModule::pre_force(Simulation& sim) {
-  if (!spec_.pour || sim.time < next_time_ || sim.time > spec_.end + spec_.interval) return;
-  next_time_ += spec_.interval;
-  const double t = std::min(sim.time, spec_.end) - spec_.start;
-  const double due_real = std::floor(spec_.rate * t + 1e-9);  // checked before the conversion
+std::uint64_t pour_due(double rate, double start, double end, double time, std::uint64_t count) {
+  const double t = std::min(time, end) - start;
+  const double due_real = std::floor(rate * t + 1e-9);  // checked before the conversion
   auto due = std::isfinite(due_real) && due_real > 0
                  ? static_cast<std::uint64_t>(std::min(due_real, 1e18))
                  : std::uint64_t{0};
-  if (spec_.count > 0) due = std::min(due, spec_.count);
+  return count > 0 ? std::min(due, count) : due;
+}
+
+void InsertionModule::pre_force(Simulation& sim) {
+  if (!spec_.pour || sim.time < next_time_ || sim.time > spec_.end + spec_.interval) return;
+  next_time_ += spec_.interval;
+  const std::uint64_t due = pour_due(spec_.rate, spec_.start, spec_.end, sim.time, spec_.count);
   if (due <= inserted_) return;
   const std::uint64_t placed = place(sim, due - inserted_, 50);
   inserted_ += placed;

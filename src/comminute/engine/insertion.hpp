@@ -32,6 +32,10 @@ struct InsertionSpec {
   std::uint64_t stream = 0;    // RNG stream (from the insertion's position in the case file)
 };
 
+// How many particles (or grains) a pour at `rate` per second from `start` to `end` has due by
+// `time` (whole ones, 1e-9 slack for round-off in the time sum), capped at `count` (0: no cap).
+std::uint64_t pour_due(double rate, double start, double end, double time, std::uint64_t count);
+
 class InsertionModule final : public Module {
  public:
   InsertionModule(InsertionSpec spec, std::uint64_t seed);

@@ -2,10 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "comminute/bonds/cluster_packing.hpp"
 #include "comminute/bonds/grain_placement.hpp"
+#include "comminute/bonds/grain_pour.hpp"
 #include "comminute/core/error.hpp"
 #include "comminute/geometry/stl_file.hpp"
 
@@ -35,8 +38,12 @@ std::unique_ptr<bonds::ClusterShape> read_shape(const CaseTable& t) {
 
 }  // namespace
 
-InsertedClusters insert_clusters(const CaseTable& root, const CaseTable& t, std::uint16_t material,
-                                 std::size_t index, Simulation& sim) {
+namespace {
+
+// The grain templates of an [[insert]] of type "clusters": packed with sub-spheres, bonded within
+// [bonds] gap_tolerance, each checked to be one piece.
+std::vector<bonds::GrainTemplate> read_templates(const CaseTable& root, const CaseTable& t,
+                                                 Rng& rng) {
   const auto bonds_table = root.optional_table("bonds");
   if (!bonds_table || !bonds_table->boolean("within_grain", false))
     t.fail("type",
@@ -47,12 +54,6 @@ InsertedClusters insert_clusters(const CaseTable& root, const CaseTable& t, std:
   const int n = static_cast<int>(t.integer("spheres_per_grain", 1, 100000));
   const double fraction = t.number("solid_fraction", Limits{0.0, 0.74, true, false}, 0.6);
   const int templates = static_cast<int>(t.integer("templates", 1, 1000, 1));
-  bonds::PlacementRequest req;
-  req.grains = static_cast<std::uint64_t>(t.integer("count", 1, 100'000'000));
-  req.layers = static_cast<int>(t.integer("layers", 1, 1000, 1));
-  req.attempts = static_cast<int>(t.integer("attempts", 1, 10'000'000, 2000));
-  req.region = read_region(t.table("region"));
-  Rng rng(sim.seed, rng_stream::clusters + 16 * index);
   std::vector<bonds::GrainTemplate> tpl;
   for (int k = 0; k < templates; ++k) {
     try {
@@ -69,6 +70,63 @@ InsertedClusters insert_clusters(const CaseTable& root, const CaseTable& t, std:
                          "skin) or the solid_fraction",
                          k, pieces, gap, tpl.back().radius));
   }
+  return tpl;
+}
+
+// mode = "pour": the pour module (bonds/grain_pour.hpp), added to sim.modules.
+void add_grain_pour(const CaseTable& t, std::vector<bonds::GrainTemplate> templates,
+                    std::uint16_t material, std::size_t index, Simulation& sim) {
+  const Limits positive = Limits::positive();
+  bonds::GrainPourSpec s;
+  s.label = fmt::format("insert[{}]", index);
+  s.stream = index;
+  s.templates = std::move(templates);
+  s.material = material;
+  s.density = sim.materials.material(material).density;
+  s.region = read_region(t.table("region"));
+  s.rate = t.number("rate", positive);
+  const bool has_count = t.has("count"), has_mass = t.has("mass");
+  if (has_count == has_mass)
+    t.fail({}, "a pour of grains needs exactly one target: 'count' (grains) or 'mass' (kg)");
+  if (has_count) s.count = static_cast<std::uint64_t>(t.integer("count", 1, 100'000'000));
+  if (has_mass) s.mass = t.number("mass", positive);
+  s.start = t.number("start", Limits::non_negative(), 0.0);
+  s.end = t.number("end", positive, std::numeric_limits<double>::infinity());
+  if (!(s.end > s.start)) t.fail("end", fmt::format("must exceed start = {} s", s.start));
+  s.interval = t.number("interval", positive, 1e-3);
+  s.layers = static_cast<int>(t.integer("layers", 1, 1000, 1));
+  if (s.layers > 1 && !std::isfinite(s.end))
+    t.fail("layers", "poured layers are time windows of [start, end]: give 'end'");
+  s.attempts = static_cast<int>(t.integer("attempts", 1, 10'000'000, 50));
+  s.velocity = t.vec3("velocity", Limits::any(), {});
+  s.velocity_spread = t.number("velocity_spread", Limits::non_negative(), 0.0);
+  ParticleStore& p = sim.particles;
+  p.add_field("grain", -1);
+  p.add_field("layer", 0);
+  p.add_field("batch", 0);
+  sim.modules.push_back(std::make_unique<bonds::GrainPourModule>(std::move(s), sim.seed));
+}
+
+}  // namespace
+
+InsertedClusters insert_clusters(const CaseTable& root, const CaseTable& t, std::uint16_t material,
+                                 std::size_t index, Simulation& sim) {
+  Rng rng(sim.seed, rng_stream::clusters + 16 * index);
+  std::vector<bonds::GrainTemplate> tpl = read_templates(root, t, rng);
+  InsertedClusters out;
+  out.radius = tpl.front().radius;
+  for (const auto& g : tpl) out.radius = std::min(out.radius, g.radius);
+  const std::string mode = t.choice("mode", {"fill", "pour"}, "fill");
+  if (mode == "pour") {
+    add_grain_pour(t, std::move(tpl), material, index, sim);
+    read_region(t.table("region")).bounds(out.lo, out.hi);
+    return out;
+  }
+  bonds::PlacementRequest req;
+  req.grains = static_cast<std::uint64_t>(t.integer("count", 1, 100'000'000));
+  req.layers = static_cast<int>(t.integer("layers", 1, 1000, 1));
+  req.attempts = static_cast<int>(t.integer("attempts", 1, 10'000'000, 2000));
+  req.region = read_region(t.table("region"));
   std::vector<const Wall*> walls;
   for (const auto& w : sim.walls) walls.push_back(w.get());
   ParticleStore& p = sim.particles;
@@ -95,9 +153,6 @@ InsertedClusters insert_clusters(const CaseTable& root, const CaseTable& t, std:
     p.field(gf).back() = grain0 + s.grain;
     p.field(lf).back() = s.layer;
   }
-  InsertedClusters out;
-  out.radius = tpl.front().radius;
-  for (const auto& g : tpl) out.radius = std::min(out.radius, g.radius);
   req.region.bounds(out.lo, out.hi);
   return out;
 }

@@ -5,33 +5,19 @@
 #include <cmath>
 
 #include "comminute/core/parallel.hpp"
+#include "comminute/engine/pair_split.hpp"
 #include "comminute/engine/parallel_threshold.hpp"
 
 namespace comminute {
 
 namespace {
-constexpr std::size_t kRun = 64;  // contacts per call of the contact pipeline
-struct Touching {                 // a touching pair of a run: its particles and lever arms (m)
+constexpr std::size_t kRun = 64;    // contacts per call of the contact pipeline
+constexpr std::size_t kAhead = 16;  // pairs between a position's prefetch and its use
+struct Touching {                   // a touching pair of a run: its particles and lever arms (m)
   std::uint32_t i, j;
   double ri, rj;
 };
 
-// Splits [0, n) into nt ranges of about equal total weight; weight(k) is the cost of item k.
-template <class Weight>
-std::vector<std::size_t> balanced_split(std::size_t n, int nt, Weight weight) {
-  std::vector<std::size_t> at(static_cast<std::size_t>(nt) + 1, n);
-  at[0] = 0;
-  if (nt == 1) return at;
-  double total = 0;
-  for (std::size_t k = 0; k < n; ++k) total += weight(k);
-  double sum = 0;
-  int t = 1;
-  for (std::size_t k = 0; k < n && t < nt; ++k) {
-    sum += weight(k);
-    while (t < nt && sum >= total * t / nt) at[static_cast<std::size_t>(t++)] = k + 1;
-  }
-  return at;
-}
 }  // namespace
 
 void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const NeighborList& pairs,
@@ -41,11 +27,10 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
   const std::size_t npairs = pairs.size();
   const int nt = npairs >= 2 * kParallelMin ? max_threads() : 1;
   const auto& rows = pairs.rows();
-  // balance by cost: a touching pair (contact law) costs several times a distance check
-  const auto& touching = state.active;
-  const auto split =
-      balanced_split(npairs, nt, [&](std::size_t k) { return 1.0 + 6.0 * touching[k]; });
-  std::vector<std::uint32_t> owner_begin(static_cast<std::size_t>(nt) + 1, 0);
+  auto& split = split_;
+  balanced_pair_split(state.active.data(), npairs, nt, split);
+  auto& owner_begin = owner_begin_;
+  owner_begin.assign(static_cast<std::size_t>(nt) + 1, 0);
   owner_begin[static_cast<std::size_t>(nt)] = static_cast<std::uint32_t>(n);
   for (int t = 1; t < nt; ++t)
     owner_begin[t] = split[t] < npairs ? pairs.first[split[t]] : static_cast<std::uint32_t>(n);
@@ -57,7 +42,8 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
   const bool want_list = armed && cs->contact_list_wanted();
   const double threshold = cs ? cs->threshold() : 0.0;
   if (cs) stress_.resize(static_cast<std::size_t>(nt));
-  std::vector<EnergyTally> tally(static_cast<std::size_t>(nt));
+  auto& tally = tally_;
+  tally.assign(static_cast<std::size_t>(nt), EnergyTally{});
   const Slots& slots = state.slots();
   const bool rolling = pipeline.has_rolling();
   std::uint8_t* active = state.active.data();
@@ -137,6 +123,17 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
       // touches is unpredictable in a dense bed); a pair that separated is rare
       for (; k < k1 && nrun < kRun; ++k) {
         const std::uint32_t i = first[k], j = second[k];
+        // the other particles are scattered in memory: their positions are asked for kAhead
+        // pairs early, the fields read later (kinematics, forces) as soon as the pair is seen
+        const std::uint32_t ja = second[std::min(k + kAhead, k1 - 1)];
+        __builtin_prefetch(&X[ja]);
+        __builtin_prefetch(&R[ja]);
+        __builtin_prefetch(&V[j]);
+        __builtin_prefetch(&W[j]);
+        __builtin_prefetch(&M[j]);
+        __builtin_prefetch(&mat[j]);
+        __builtin_prefetch(&F[j], 1);
+        __builtin_prefetch(&T[j], 1);
         const Vec3 d = X[i] - X[j];
         const double rsum = R[i] + R[j];
         const double dist2 = norm2(d);

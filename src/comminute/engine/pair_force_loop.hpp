@@ -48,6 +48,10 @@ class PairForceLoop {
     std::vector<ContactRecord> contacts;
   };
   std::vector<StressPart> stress_;
+  // reused from step to step: the threads' pair ranges, their first owned particles, their energy
+  std::vector<std::size_t> split_;
+  std::vector<std::uint32_t> owner_begin_;
+  std::vector<EnergyTally> tally_;
 };
 
 }  // namespace comminute

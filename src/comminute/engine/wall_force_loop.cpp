@@ -1,6 +1,7 @@
 #include "comminute/engine/wall_force_loop.hpp"
 
 #include <algorithm>
+#include <span>
 
 #include "comminute/core/parallel.hpp"
 #include "comminute/engine/parallel_threshold.hpp"
@@ -16,29 +17,17 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
                         std::vector<EndedContact>& ended) {
   const std::size_t nc = candidates.size();
   const int nt = nc >= kParallelMin / 2 ? max_threads() : 1;
-  std::vector<std::size_t> begin(static_cast<std::size_t>(nt) + 1, nc);
+  auto& begin = begin_;
+  begin.assign(static_cast<std::size_t>(nt) + 1, nc);
   begin[0] = 0;
   for (int t = 1; t < nt; ++t) {
     std::size_t b = std::max(begin[t - 1], nc * t / nt);
     while (b > 0 && b < nc && candidates[b].particle == candidates[b - 1].particle) ++b;
     begin[t] = b;
   }
-  struct WallTally {
-    EnergyTally energy;
-    std::vector<Vec3> force, torque;
-    std::vector<WallContactRecord> touching;
-    struct Wear {
-      std::uint32_t wall;
-      int element;
-      double fn, slip;  // N, m
-    };
-    std::vector<Wear> wear;
-    std::vector<EndedContact> ended;
-    std::vector<ContactStart> starts;
-    std::vector<ContactRecord> contacts;
-  };
   const CollisionRecord* record = pipeline.collisions();
-  std::vector<WallTally> part(static_cast<std::size_t>(nt));
+  auto& part = parts_;
+  part.resize(static_cast<std::size_t>(nt));
   const Slots& slots = state.slots();
   ContactStress* cs = pipeline.stress();
   const bool armed = cs && cs->armed();
@@ -47,8 +36,14 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
   {
     const int t = thread_id();
     WallTally& mine = part[t];
+    mine.energy = {};
     mine.force.assign(walls.size(), Vec3{});
     mine.torque.assign(walls.size(), Vec3{});
+    mine.touching.clear();
+    mine.wear.clear();
+    mine.ended.clear();
+    mine.starts.clear();
+    mine.contacts.clear();
     // the force of candidate q touching as `hit` (not touching: its state is cleared)
     auto force = [&](std::size_t q, const WallContact& hit) {
       const WallContactRecord& c = candidates[q];
@@ -104,7 +99,8 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       rec.candidate = static_cast<std::uint32_t>(q);
       mine.touching.push_back(rec);
     };
-    std::vector<WallContact> found, hits;
+    auto& found = mine.found;
+    auto& hits = mine.hits;
     std::size_t q = begin[t];
     while (q < begin[t + 1]) {
       // the candidates of one particle, [q, end): all are looked up first, so that a contact
@@ -142,7 +138,7 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
     }
   }
   touching.clear();
-  for (const auto& mine : part) {
+  for (const auto& mine : std::span(part.data(), static_cast<std::size_t>(nt))) {
     for (std::size_t k = 0; k < walls.size(); ++k) {
       walls[k]->force += mine.force[k];
       walls[k]->torque += mine.torque[k];

@@ -34,6 +34,25 @@ class WallForceLoop {
            const ContactPipeline& pipeline, ContactStateStore& state, double dt,
            EnergyLedger& ledger, double& elastic, std::vector<WallContactRecord>& touching,
            std::vector<EndedContact>& ended);
+
+ private:
+  struct WallTally {  // one thread's share of a step; kept from step to step for its capacity
+    EnergyTally energy;
+    std::vector<Vec3> force, torque;
+    std::vector<WallContactRecord> touching;
+    struct Wear {
+      std::uint32_t wall;
+      int element;
+      double fn, slip;  // N, m
+    };
+    std::vector<Wear> wear;
+    std::vector<EndedContact> ended;
+    std::vector<ContactStart> starts;
+    std::vector<ContactRecord> contacts;
+    std::vector<WallContact> found, hits;  // scratch of the look-up of one particle's candidates
+  };
+  std::vector<WallTally> parts_;
+  std::vector<std::size_t> begin_;  // the threads' first candidates
 };
 
 }  // namespace comminute

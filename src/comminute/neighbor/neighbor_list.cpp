@@ -16,9 +16,9 @@ void NeighborList::make_rows(std::size_t n) {
 
 void NeighborList::build(const ParticleStore& p, double skin, const std::vector<std::uint8_t>& keep,
                          const std::vector<std::uint64_t>* labels) {
-  // 1. the ids (and periodic labels) of the pairs whose state is to be carried over
-  // (by their slots: the ids and labels of the last build are kept aside until the plan is made)
-  // (reserved to their count: an array that doubles while it fills briefly holds two copies)
+  // 1. the pairs whose state is to be carried over, by their slots (the ids and labels of the last
+  // build are kept aside until the plan is made); reserved to their count, as an array that
+  // doubles while it fills briefly holds two copies
   saved_.clear();
   old_labelled_ = labels_.size() == ids_.size();
   const std::size_t n_keep = std::min(keep.size(), first.size());

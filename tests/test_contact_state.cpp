@@ -2,6 +2,10 @@
 // swap rules when the neighbour list is rebuilt, gathered on in-place updates, checkpointed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <numeric>
+#include <random>
+
 #include "comminute/contact/contact_state.hpp"
 #include "comminute/core/case_table.hpp"
 #include "comminute/core/error.hpp"
@@ -42,6 +46,58 @@ TEST(ContactState, CarryAppliesEachSlotsSwapRule) {
     EXPECT_EQ(f.s.active[k], 0) << k;
   }
   EXPECT_EQ(f.s.active[0] + f.s.active[4], 2);
+}
+
+// The neighbour list's carries (rising sources) run in place along chains when the columns have
+// room: swaps, cycles, chains, a shorter and a longer list, both directions of listing. Each must
+// give exactly what the copying carry gives: new contact to[e] holds old from[e] (negated for the
+// spring when reversed), every other contact is fresh. Exact comparisons: values are only moved.
+TEST(ContactState, CarryInPlaceEqualsTheCopyForAnyPlan) {
+  std::mt19937 gen(12345);
+  for (int trial = 0; trial < 200; ++trial) {
+    ContactStateStore s;
+    const SlotId spring = s.declare_vec3("spring", SwapRule::negate);
+    const SlotId stiff = s.declare_f64("stiffness", SwapRule::keep);
+    const std::size_t n_old = 40;
+    s.carry({}, {}, {}, 48);  // capacity for 54: later lists of up to 54 are carried in place
+    s.carry({}, {}, {}, n_old);
+    for (std::size_t k = 0; k < n_old; ++k) {
+      s.at(k).vec3(spring) = {1.0 + static_cast<double>(k), -0.5 * static_cast<double>(k), 7.0};
+      s.at(k).f64(stiff) = 100.0 + static_cast<double>(k);
+      s.active[k] = 1;
+    }
+    const std::size_t n_new = 30 + gen() % 25;  // 30..54: shorter and longer lists
+    std::vector<std::uint32_t> sources(n_old), targets(n_new);
+    std::iota(sources.begin(), sources.end(), 0u);
+    std::iota(targets.begin(), targets.end(), 0u);
+    std::shuffle(sources.begin(), sources.end(), gen);
+    std::shuffle(targets.begin(), targets.end(), gen);
+    const std::size_t m = gen() % 31;  // up to 30 carried
+    std::vector<std::uint32_t> from(sources.begin(), sources.begin() + m);
+    std::sort(from.begin(), from.end());  // rising, as the neighbour list plans them
+    std::vector<std::uint32_t> to(targets.begin(), targets.begin() + m);
+    std::vector<std::uint8_t> reversed(m);
+    for (auto& r : reversed) r = static_cast<std::uint8_t>(gen() % 2);
+    s.carry(from, to, reversed, n_new);
+    ASSERT_EQ(s.size(), n_new);
+    std::vector<int> carried_from(n_new, -1);
+    for (std::size_t e = 0; e < m; ++e) carried_from[to[e]] = static_cast<int>(e);
+    for (std::size_t k = 0; k < n_new; ++k) {
+      const int e = carried_from[k];
+      if (e < 0) {
+        EXPECT_EQ(s.at(k).vec3(spring), Vec3{}) << trial << " " << k;
+        EXPECT_EQ(s.at(k).f64(stiff), 0.0) << trial << " " << k;
+        EXPECT_EQ(s.active[k], 0) << trial << " " << k;
+        continue;
+      }
+      const double o = static_cast<double>(from[static_cast<std::size_t>(e)]);
+      const Vec3 old{1.0 + o, -0.5 * o, 7.0};
+      EXPECT_EQ(s.at(k).vec3(spring), reversed[static_cast<std::size_t>(e)] ? -old : old)
+          << trial << " " << k;
+      EXPECT_EQ(s.at(k).f64(stiff), 100.0 + o) << trial << " " << k;
+      EXPECT_EQ(s.active[k], 1) << trial << " " << k;
+    }
+  }
 }
 
 TEST(ContactState, GatherKeepsOrderAndStartsNewContactsFresh) {

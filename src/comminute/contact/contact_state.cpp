@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "comminute/core/error.hpp"
 #include "comminute/core/parallel.hpp"
 
@@ -98,17 +100,68 @@ void ContactStateStore::move(std::size_t from, std::size_t to) {
 }
 
 namespace {
-// Column c of the new list: fresh everywhere but at to[e], which takes old from[e]. The carried
+// `data` becomes `size` copies of `fresh`. A column that must grow is released before the larger
+// one is allocated (std::vector::assign would hold both): what it held is no longer needed, and the
+// peak memory of a neighbour rebuild stays one column, not two. It is reserved 1/8 larger, so that
+// the next lists, a little longer, are carried in place (reserve that is never written is not
+// resident memory).
+template <class T>
+void refill(std::vector<T>& data, std::size_t size, T fresh) {
+  if (size > data.capacity()) {
+    std::vector<T>().swap(data);
+    data.reserve(size + size / 8);
+  }
+  data.assign(size, fresh);
+}
+
+// Column c of the new list: fresh everywhere but at to[e], which takes old from[e]. When the
+// column has room and from[] rises (the neighbour list's plans), the values move in place along
+// chains: the value that leaves for to[e] displaces the one there, which the carry whose source
+// that is (found by bisection of from[]) takes next, so each value is read before it is
+// overwritten and no second copy of the column or of the carried values is held. Else the carried
 // values are gathered first, so only they are held twice, not the whole column.
 template <class T>
 void carry_column(std::vector<T>& data, SwapRule rule, const std::vector<std::uint32_t>& from,
                   const std::vector<std::uint32_t>& to, const std::vector<std::uint8_t>& reversed,
-                  std::size_t size) {
-  std::vector<T> kept(from.size());
-  for (std::size_t e = 0; e < from.size(); ++e)
-    kept[e] = reversed[e] ? swapped(data[from[e]], rule) : data[from[e]];
-  data.assign(size, T{});
-  for (std::size_t e = 0; e < from.size(); ++e) data[to[e]] = kept[e];
+                  const std::vector<std::uint8_t>& carried_to, std::size_t size) {
+  const std::size_t m = from.size();
+  const bool rising = std::adjacent_find(from.begin(), from.end(),
+                                         [](auto a, auto b) { return a >= b; }) == from.end();
+  if (!rising || size > data.capacity()) {
+    std::vector<T> kept(m);
+    for (std::size_t e = 0; e < m; ++e)
+      kept[e] = reversed[e] ? swapped(data[from[e]], rule) : data[from[e]];
+    refill(data, size, T{});
+    for (std::size_t e = 0; e < m; ++e) data[to[e]] = kept[e];
+    return;
+  }
+  if (size > data.size()) data.resize(size, T{});  // within the capacity: no copy
+  std::vector<bool> done(m, false);
+  auto source_of = [&from](std::size_t q) {  // the carry reading slot q, or m
+    const auto it = std::lower_bound(from.begin(), from.end(), q);
+    return it != from.end() && *it == q ? static_cast<std::size_t>(it - from.begin()) : from.size();
+  };
+  for (std::size_t e0 = 0; e0 < m; ++e0) {
+    if (done[e0]) continue;
+    std::size_t e = e0;
+    T v = reversed[e] ? swapped(data[from[e]], rule) : data[from[e]];
+    while (true) {
+      done[e] = true;
+      const std::size_t q = to[e];
+      const std::size_t next = q < data.size() ? source_of(q) : m;
+      if (next == m || done[next]) {
+        data[q] = v;
+        break;
+      }
+      const T w = data[q];  // still the old value: its carry has not run
+      data[q] = v;
+      e = next;
+      v = reversed[e] ? swapped(w, rule) : w;
+    }
+  }
+  data.resize(size);
+  for (std::size_t q = 0; q < size; ++q)
+    if (!carried_to[q]) data[q] = T{};
 }
 
 template <class T>
@@ -127,11 +180,12 @@ void gather_column(std::vector<T>& data, std::vector<T>& spare,
 void ContactStateStore::carry(const std::vector<std::uint32_t>& from,
                               const std::vector<std::uint32_t>& to,
                               const std::vector<std::uint8_t>& reversed, std::size_t size) {
-  for (auto& c : vec3_) carry_column(c.data, c.swap, from, to, reversed, size);
-  for (auto& c : f32_) carry_column(c.data, c.swap, from, to, reversed, size);
-  for (auto& c : f64_) carry_column(c.data, c.swap, from, to, reversed, size);
-  active.assign(size, 0);
+  // the new flags first: they tell the columns which contacts are fresh
+  refill(active, size, std::uint8_t{0});
   for (std::uint32_t k : to) active[k] = 1;
+  for (auto& c : vec3_) carry_column(c.data, c.swap, from, to, reversed, active, size);
+  for (auto& c : f32_) carry_column(c.data, c.swap, from, to, reversed, active, size);
+  for (auto& c : f64_) carry_column(c.data, c.swap, from, to, reversed, active, size);
   refresh();
 }
 

@@ -52,6 +52,8 @@ void PairTracker::rebuild(ParticleStore& p, const Walls& walls, SimulationOption
   if (!labels) prepare(p, options);
   nlist_.build(p, options.skin, pair_state.active, labels);
   const auto& carried = nlist_.carried();
+  // the last build's positions are spent: released before the carry, the peak memory of a rebuild
+  std::vector<Vec3>().swap(x_at_build_);
   pair_state.carry(carried.from, carried.to, carried.reversed, nlist_.size());
   x_at_build_ = p.x;
   r_at_build_ = p.radius;

@@ -141,6 +141,7 @@ void Simulation::compute_forces() {
   n_owned_ = particles.owned();
   const bool rebuilt = tracker_.update(particles, walls, options, pair_state_, wall_state_, labels);
   if (rebuilt && ghosts_.active()) ghosts_.turn_carried(tracker_.pairs().carried(), pair_state_);
+  if (rebuilt) tracker_.pairs().release_carry();  // spent: not resident until the next rebuild
   if (!forces_cleared_)  // set-up, or particles inserted/removed after the drift
     VelocityVerlet::start_forces(particles, gravity);
   forces_cleared_ = false;

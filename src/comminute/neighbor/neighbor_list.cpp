@@ -16,13 +16,24 @@ void NeighborList::make_rows(std::size_t n) {
 
 void NeighborList::build(const ParticleStore& p, double skin, const std::vector<std::uint8_t>& keep,
                          const std::vector<std::uint64_t>* labels) {
-  // 1. the ids (and periodic labels) of the pairs whose state is to be carried over
-  // (by their slots: the ids and labels of the last build are kept aside until the plan is made)
+  // 1. the pairs whose state is to be carried over, by their slots (the ids and labels of the last
+  // build are kept aside until the plan is made); reserved to their count, as an array that
+  // doubles while it fills briefly holds two copies
   saved_.clear();
   old_labelled_ = labels_.size() == ids_.size();
-  for (std::size_t k = 0; k < keep.size() && k < first.size(); ++k)
-    if (keep[k]) saved_.push_back({first[k], second[k], static_cast<std::uint32_t>(k)});
-  old_ids_.swap(ids_);
+  const std::size_t n_keep = std::min(keep.size(), first.size());
+  saved_.reserve(static_cast<std::size_t>(
+      std::count_if(keep.begin(), keep.begin() + static_cast<std::ptrdiff_t>(n_keep),
+                    [](std::uint8_t k) { return k != 0; })));
+  for (std::size_t k = 0; k < n_keep; ++k)
+    if (keep[k]) saved_.push_back({first[k], second[k]});
+  // slots unchanged since the last build (no sort, insertion or removal, no periodic images): a
+  // saved pair keeps its two slots, and neither the old ids nor an id table are needed
+  same_slots_ = labels == nullptr && labels_.empty() && ids_ == p.id;
+  if (!same_slots_) {
+    old_ids_.swap(ids_);
+    ids_ = p.id;
+  }
   old_labels_.swap(labels_);
   if (labels)
     labels_ = *labels;
@@ -31,7 +42,6 @@ void NeighborList::build(const ParticleStore& p, double skin, const std::vector<
   const std::uint32_t n_owned = static_cast<std::uint32_t>(p.owned());
 
   const std::size_t n = p.size();
-  ids_ = p.id;
   large_.assign(n, 0);
   first.clear();
   second.clear();
@@ -41,38 +51,56 @@ void NeighborList::build(const ParticleStore& p, double skin, const std::vector<
     return;
   }
 
-  // 2. split by size
-  std::vector<double> r = p.radius;
-  const double r_max = *std::max_element(r.begin(), r.end());
-  const std::size_t q90 = (n * 9) / 10;
-  std::nth_element(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(q90), r.end());
-  double r_ref = r[q90];
-  if (r_max <= 1.5 * r_ref) r_ref = r_max;
-  std::vector<std::uint32_t> small_set, large_set;
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (p.radius[i] > r_ref) {
-      large_[i] = 1;
-      large_set.push_back(i);
-    } else {
-      small_set.push_back(i);
-    }
+  // 2. split by size (the radius copy and the two sets live only until the grids are built)
+  index_ = ReachIndex{};  // the last build's grids: replaced below, not needed meanwhile
+  double r_ref = 0, r_max = 0;
+  {
+    std::vector<double> r = p.radius;
+    r_max = *std::max_element(r.begin(), r.end());
+    const std::size_t q90 = (n * 9) / 10;
+    std::nth_element(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(q90), r.end());
+    r_ref = r[q90];
   }
+  if (r_max <= 1.5 * r_ref) r_ref = r_max;
   CellGrid small_grid, large_grid;
-  small_grid.build(p.x, small_set, 2 * r_ref + skin);
-  if (!large_set.empty()) large_grid.build(p.x, large_set, 2 * r_max + skin);
+  bool has_large = false;
+  {
+    std::vector<std::uint32_t> small_set, large_set;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      if (p.radius[i] > r_ref) {
+        large_[i] = 1;
+        large_set.push_back(i);
+      } else {
+        small_set.push_back(i);
+      }
+    }
+    small_grid.build(p.x, small_set, 2 * r_ref + skin);
+    has_large = !large_set.empty();
+    if (has_large) large_grid.build(p.x, large_set, 2 * r_max + skin);
+  }
 
-  // 3. rows by owner slot, built in parallel chunks and concatenated in order (deterministic)
+  // 3. rows by owner slot, built in parallel chunks and concatenated in order (deterministic).
+  // Thread 0 writes straight into first/second (its rows come first), the others into their own
+  // arrays, reserved for their share of the last list (untouched reserve is not resident memory),
+  // so they seldom grow (a growing array briefly holds its old and new copy).
   const int nt = n >= 4096 ? max_threads() : 1;  // small systems: a thread team costs more
   auto& tf = thread_first_;
   auto& ts = thread_second_;
   tf.resize(static_cast<std::size_t>(nt));
   ts.resize(static_cast<std::size_t>(nt));
+  const std::size_t share = last_pairs_ / static_cast<std::size_t>(nt);
+  first.reserve(last_pairs_ + last_pairs_ / 4);
+  second.reserve(last_pairs_ + last_pairs_ / 4);
+  for (int t = 1; t < nt; ++t) {
+    tf[t].reserve(share + share / 4);
+    ts[t].reserve(share + share / 4);
+  }
 #pragma omp parallel num_threads(nt)
   {
     const int t = thread_id();
     const std::size_t i0 = n * t / nt, i1 = n * (t + 1) / nt;
-    auto& F = nt == 1 ? first : tf[t];
-    auto& S = nt == 1 ? second : ts[t];
+    auto& F = t == 0 ? first : tf[t];
+    auto& S = t == 0 ? second : ts[t];
     F.clear();
     S.clear();
     for (std::size_t ii = i0; ii < i1; ++ii) {
@@ -102,52 +130,79 @@ void NeighborList::build(const ParticleStore& p, double skin, const std::vector<
     }
   }
   if (nt > 1) {
-    std::size_t total = 0;
-    for (const auto& v : tf) total += v.size();
+    std::size_t total = first.size();
+    for (int t = 1; t < nt; ++t) total += tf[t].size();
+    std::size_t at = first.size();
     first.resize(total);
     second.resize(total);
-    std::size_t at = 0;
-    for (int t = 0; t < nt; ++t) {
+    for (int t = 1; t < nt; ++t) {
       std::copy(tf[t].begin(), tf[t].end(), first.begin() + static_cast<std::ptrdiff_t>(at));
       std::copy(ts[t].begin(), ts[t].end(), second.begin() + static_cast<std::ptrdiff_t>(at));
       at += tf[t].size();
-    }
-    // released before the contact state is carried into new arrays, which lowers the peak
-    // memory of a rebuild (they are allocated anew at the next)
-    for (int t = 0; t < nt; ++t) {
+      // released before the contact state is carried into new arrays, which lowers the peak
+      // memory of a rebuild (they are allocated anew at the next)
       std::vector<std::uint32_t>().swap(tf[t]);
       std::vector<std::uint32_t>().swap(ts[t]);
     }
   }
+  last_pairs_ = first.size();
   make_rows(n);
-  plan_carry(p, labels);
+  plan_carry(p, keep, labels);
   // the saved pairs, their old ids and the id table served plan_carry only: released for the same
   // reason
   std::vector<SavedPair>().swap(saved_);
   std::vector<std::uint64_t>().swap(old_ids_);
   std::vector<std::uint64_t>().swap(old_labels_);
   std::vector<std::pair<std::uint64_t, std::uint32_t>>().swap(slot_of_id_);
+  std::vector<std::uint32_t>().swap(slot_by_id_);
   skin_ = skin;
-  index_.adopt(std::move(small_grid), std::move(large_grid), !large_set.empty(), r_ref, r_max, n);
+  index_.adopt(std::move(small_grid), std::move(large_grid), has_large, r_ref, r_max, n);
 }
 
-void NeighborList::plan_carry(const ParticleStore& p, const std::vector<std::uint64_t>* labels) {
+void NeighborList::plan_carry(const ParticleStore& p, const std::vector<std::uint8_t>& keep,
+                              const std::vector<std::uint64_t>* labels) {
   // 4. find the saved pairs in the new rows, by particle ids (a ghost carries its owner's id: the
   // labels tell the copies apart)
-  const std::size_t n = p.size();
-  auto& slot = slot_of_id_;  // slot of each id: a sorted (id, slot) table
-  slot.resize(n);
-  for (std::uint32_t i = 0; i < n; ++i) slot[i] = {p.id[i], i};
-  std::sort(slot.begin(), slot.end());
-  auto copies = [&slot](std::uint64_t id) {
-    return std::equal_range(slot.begin(), slot.end(), std::make_pair(id, std::uint32_t{0}),
-                            [](const auto& x, const auto& y) { return x.first < y.first; });
+  const std::size_t n = same_slots_ ? 0 : p.size();  // no id table needed with the same slots
+  // slot of each id: without ghosts each id has one slot, and when the ids are dense (at most two
+  // per slot, the usual case) a table by id - min id holds it in 4 B per id; else a sorted
+  // (id, slot) table of 16 B per slot, which also lists the copies of a ghost's id
+  std::uint64_t id_lo = 0, id_hi = 0;
+  if (n > 0) {
+    const auto [lo, hi] = std::minmax_element(p.id.begin(), p.id.end());
+    id_lo = *lo;
+    id_hi = *hi;
+  }
+  const bool direct = labels == nullptr && n > 0 && id_hi - id_lo < 2 * n;
+  auto& slot = slot_of_id_;
+  auto& slot_by_id = slot_by_id_;
+  if (direct) {
+    slot_by_id.assign(id_hi - id_lo + 1, none);
+    for (std::uint32_t i = 0; i < n; ++i) slot_by_id[p.id[i] - id_lo] = i;
+  } else {
+    slot.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) slot[i] = {p.id[i], i};
+    std::sort(slot.begin(), slot.end());
+  }
+  // the slots holding `id` as a range of (id, slot) entries
+  using Entry = std::pair<std::uint64_t, std::uint32_t>;
+  auto copies = [&](std::uint64_t id, Entry& one) -> std::pair<const Entry*, const Entry*> {
+    if (direct) {
+      const bool known = id >= id_lo && id <= id_hi && slot_by_id[id - id_lo] != none;
+      one = {id, known ? slot_by_id[id - id_lo] : none};
+      return {&one, &one + (known ? 1 : 0)};
+    }
+    const auto [b, e] =
+        std::equal_range(slot.begin(), slot.end(), std::make_pair(id, std::uint32_t{0}),
+                         [](const auto& x, const auto& y) { return x.first < y.first; });
+    return {slot.data() + (b - slot.begin()), slot.data() + (e - slot.begin())};
   };
   auto label = [labels](std::uint32_t s) { return labels ? (*labels)[s] : std::uint64_t{0}; };
   // the copies (a, b) of the saved pair's bodies whose label difference is the saved one
   auto find_pair = [&](const SavedIds& e, std::uint32_t& a, std::uint32_t& b) {
-    const auto [a0, a1] = copies(e.a);
-    const auto [b0, b1] = copies(e.b);
+    Entry one_a, one_b;
+    const auto [a0, a1] = copies(e.a, one_a);
+    const auto [b0, b1] = copies(e.b, one_b);
     for (auto ia = a0; ia != a1; ++ia)
       for (auto ib = b0; ib != b1; ++ib)
         if (label(ib->second) - label(ia->second) == e.lb - e.la &&
@@ -162,13 +217,24 @@ void NeighborList::plan_carry(const ParticleStore& p, const std::vector<std::uin
   carry_.to.clear();
   carry_.reversed.clear();
   carry_.shift.clear();
+  carry_.from.reserve(saved_.size());
+  carry_.to.reserve(saved_.size());
+  carry_.reversed.reserve(saved_.size());
+  if (labels) carry_.shift.reserve(saved_.size());
+  std::size_t pair = 0;  // the old index of saved pair e: the e-th flagged in `keep`
   for (const auto& s : saved_) {
-    const bool lab = old_labelled_;
-    const SavedIds e{old_ids_[s.a], old_ids_[s.b], lab ? old_labels_[s.a] : 0,
-                     lab ? old_labels_[s.b] : 0, s.pair};
-    std::uint32_t a = 0, b = 0;
-    if (!find_pair(e, a, b)) continue;  // removed particle (or its image is gone)
-    const std::uint64_t shift = label(a) - e.la;
+    while (!keep[pair]) ++pair;
+    const auto old_pair = static_cast<std::uint32_t>(pair++);
+    std::uint32_t a = s.a, b = s.b;
+    std::uint64_t la = 0;
+    if (!same_slots_) {
+      const bool lab = old_labelled_;
+      const SavedIds e{old_ids_[s.a], old_ids_[s.b], lab ? old_labels_[s.a] : 0,
+                       lab ? old_labels_[s.b] : 0, old_pair};
+      if (!find_pair(e, a, b)) continue;  // removed particle (or its image is gone)
+      la = e.la;
+    }
+    const std::uint64_t shift = label(a) - la;
     // owner: the large one of a mixed pair, else the smaller slot (pairs added by an in-place
     // update are owned by the fragment: look in the other row too)
     const std::uint32_t saved_owner = a;
@@ -177,7 +243,7 @@ void NeighborList::plan_carry(const ParticleStore& p, const std::vector<std::uin
     for (int attempt = 0; attempt < 2 && !found; ++attempt, std::swap(a, b))
       for (std::uint32_t k = row_[a]; k < row_[a + 1]; ++k)
         if (second[k] == b) {
-          carry_.from.push_back(e.pair);
+          carry_.from.push_back(old_pair);
           carry_.to.push_back(k);
           carry_.reversed.push_back(a != saved_owner ? 1 : 0);
           if (labels) carry_.shift.push_back(shift);

@@ -43,6 +43,8 @@ class NeighborList {
     std::vector<std::uint64_t> shift;
   };
   const Carry& carried() const { return carry_; }
+  // Frees the carry plan once the contact state has followed it (memory between rebuilds).
+  void release_carry() { carry_ = Carry{}; }
   // In-place update after compact() removed particles (keeping the order of the others) and new
   // ones were appended, without a rebuild. slots_after_removal(): old slot -> new slot (none =
   // removed), empty when `p` does not start with the list's kept particles in order.
@@ -83,22 +85,26 @@ class NeighborList {
   Carry carry_;                           // of the last build
   std::vector<std::uint32_t> kept_from_;  // of the last in-place update
   // scratch reused between builds
-  void plan_carry(const ParticleStore& p, const std::vector<std::uint64_t>* labels);
+  void plan_carry(const ParticleStore& p, const std::vector<std::uint8_t>& keep,
+                  const std::vector<std::uint64_t>* labels);
   struct SavedIds {
     std::uint64_t a, b;    // ids of owner and other of a kept pair
     std::uint64_t la, lb;  // their labels (periodic images; 0 without)
     std::uint32_t pair;    // its index in the old list
   };
   std::vector<std::uint64_t> labels_;  // labels at build (periodic runs)
-  struct SavedPair {  // a kept pair by its slots in the last build (ids in old_ids_): 12 B
-    std::uint32_t a, b, pair;
+  struct SavedPair {     // a kept pair by its slots in the last build (ids in old_ids_): 8 B; its
+    std::uint32_t a, b;  // index in the old list is its rank among the flags of `keep`
   };
   std::vector<SavedPair> saved_;
   std::vector<std::uint64_t> old_ids_, old_labels_;  // ids_, labels_ of the last build
   bool old_labelled_ = false;
+  bool same_slots_ = false;  // the last build's slots hold the same particles (no id look-up)
   std::vector<std::uint32_t> spare_first_, spare_second_;  // in-place updates copy into these
   std::vector<std::vector<std::uint32_t>> thread_first_, thread_second_;
+  std::size_t last_pairs_ = 0;  // pairs of the last build: the threads' arrays are reserved from it
   std::vector<std::pair<std::uint64_t, std::uint32_t>> slot_of_id_;
+  std::vector<std::uint32_t> slot_by_id_;  // slot by id - lowest id (dense ids, no ghosts)
   void make_rows(std::size_t n);
 };
 

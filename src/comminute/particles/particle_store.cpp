@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <functional>
 
 #include "comminute/core/error.hpp"
@@ -33,11 +34,18 @@ std::uint64_t ParticleStore::add_with_mass(const ParticleInit& p, double m) {
 
 namespace {
 template <class T>
-void compact_vector(std::vector<T>& a, const std::vector<std::uint32_t>& flags) {
-  std::size_t out = 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (!(flags[i] & pflag::remove)) a[out++] = a[i];
-  a.resize(out);
+// Drops the elements at `removed` (ascending slots): the runs between them are moved down in
+// blocks (memmove), the same result as an element-by-element compaction.
+void compact_vector(std::vector<T>& a, const std::vector<std::size_t>& removed) {
+  if (removed.empty()) return;
+  auto out = a.begin() + static_cast<std::ptrdiff_t>(removed[0]);
+  for (std::size_t k = 0; k < removed.size(); ++k) {
+    const std::size_t from = removed[k] + 1,
+                      to = k + 1 < removed.size() ? removed[k + 1] : a.size();
+    out = std::move(a.begin() + static_cast<std::ptrdiff_t>(from),
+                    a.begin() + static_cast<std::ptrdiff_t>(to), out);
+  }
+  a.erase(out, a.end());
 }
 template <class T>
 void permute_vector(std::vector<T>& a, const std::vector<std::size_t>& order, std::vector<T>& tmp) {
@@ -84,7 +92,10 @@ void ParticleStore::drop_ghosts() {
 std::size_t ParticleStore::compact() {
   if (!ghost_owner.empty()) throw Error("ParticleStore::compact() with ghosts present");
   const std::size_t before = size();
-  const std::vector<std::uint32_t> fl = flags;
+  std::vector<std::size_t> fl;  // the slots to remove
+  for (std::size_t i = 0; i < before; ++i)
+    if (flags[i] & pflag::remove) fl.push_back(i);
+  if (fl.empty()) return 0;
   // one job per array, shared out between the threads (the arrays are independent)
   std::vector<std::function<void()>> jobs{
       [&] { compact_vector(x, fl); },    [&] { compact_vector(v, fl); },

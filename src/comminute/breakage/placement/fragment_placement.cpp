@@ -6,15 +6,6 @@
 
 namespace comminute::breakage {
 
-double radius_allowed(const Vec3& x, double r_want, const Sphere& other, double eps) {
-  const double d = norm(x - other.x);
-  // overlap r + R - d <= eps min(r, R): with r <= R this is r <= (d - R)/(1 - eps), else
-  // r <= d - R + eps R; take the branch consistent with the result.
-  const double small = (d - other.r) / (1.0 - eps);
-  const double r = small <= other.r ? small : d - other.r + eps * other.r;
-  return std::min(r_want, r);
-}
-
 namespace {
 Vec3 uniform_in_ball(double radius, Rng& rng) {
   const Vec3 dir{rng.normal(), rng.normal(), rng.normal()};

@@ -4,6 +4,7 @@
 // and no mass is ever missing); their radius starts shrunk so that overlaps with siblings,
 // neighbours and walls are at most eps min(r_i, r_j), and grows afterwards (FragmentGrowth, in the
 // module).
+#include <algorithm>
 #include <functional>
 #include <vector>
 
@@ -37,8 +38,16 @@ std::vector<Sphere> place_fragments(const Sphere& parent, const std::vector<doub
                                     const PlacementOptions& opt, Rng& rng);
 
 // Largest radius (<= r_want) of a sphere at `x` whose overlap with sphere `other` is at most
-// eps min(radius, other.r).
-double radius_allowed(const Vec3& x, double r_want, const Sphere& other, double eps);
+// eps min(radius, other.r). (Inline: fragment growth calls it for every pair of a growing
+// fragment, every step.)
+inline double radius_allowed(const Vec3& x, double r_want, const Sphere& other, double eps) {
+  const double d = norm(x - other.x);
+  // overlap r + R - d <= eps min(r, R): with r <= R this is r <= (d - R)/(1 - eps), else
+  // r <= d - R + eps R; take the branch consistent with the result.
+  const double small = (d - other.r) / (1.0 - eps);
+  const double r = small <= other.r ? small : d - other.r + eps * other.r;
+  return std::min(r_want, r);
+}
 
 struct FragmentVelocities {
   std::vector<Vec3> v, w;  // m/s, rad/s

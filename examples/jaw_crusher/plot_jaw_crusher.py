@@ -59,7 +59,7 @@ def main():
     total = sum(m for _, m in product)
     coarse = sum(m for d, m in product if d > args.oss)
     print(f"{100 * coarse / total:.3g} % of the product mass is coarser than the open-side "
-          f"setting (README.md: fragments still growing, or squeezed through by the soft contacts)")
+          f"setting (should be 0 with pushing growth: README.md)")
     sieves = [0.002 * 2 ** (k / 4) for k in range(0, 23)]
     passing = [100 * sum(m for d, m in product if d <= s) / total for s in sieves]
     a, b = args.feed  # uniform in number on [a, b]: mass fraction (s^4 - a^4) / (b^4 - a^4)

@@ -262,13 +262,13 @@ TEST(CoarseGraining, SnapshotsGiveThePrimaryDiameter) {
 }
 
 TEST(CoarseGraining, MixerExampleIsCoarseGrainedAndDocumented) {
-  // examples/mixer_pbm/mixer_sector.toml builds (in a scratch copy: it writes its STL files),
+  // examples/mixer_pbm/mixer_sector_6p25.toml builds (in a scratch copy: it writes its STL files),
   // uses only documented keys, and its pairs carry the study's Γ × k (k = 2.5)
   const comminute::testing::TestDir dir;
   std::filesystem::copy_file(
-      std::string(COMMINUTE_SOURCE_DIR) + "/examples/mixer_pbm/mixer_sector.toml",
-      dir / "mixer_sector.toml");
-  const CaseFile f = CaseFile::load(dir / "mixer_sector.toml");
+      std::string(COMMINUTE_SOURCE_DIR) + "/examples/mixer_pbm/mixer_sector_6p25.toml",
+      dir / "mixer_sector_6p25.toml");
+  const CaseFile f = CaseFile::load(dir / "mixer_sector_6p25.toml");
   io::DemCase c = io::build_dem_case(f.root());
   io::read_output_options(*f.root().optional_table("output"));
   f.reject_unknown();

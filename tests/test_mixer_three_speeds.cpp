@@ -117,10 +117,12 @@ std::string pbm_case(const std::string& spectrum_file) {
 density = 1800.0
 [grid]
 spacing = "logarithmic"
+coordinate = "size"
 min = 1e-6
 max = 2e-3
-classes = 30
+classes = 40
 [initial]
+basis = "mass"
 kind = "lognormal"
 median = 6e-4
 sigma = 0.3
@@ -185,12 +187,10 @@ std::filesystem::path write_cases(const std::filesystem::path& dir,
   std::ofstream(dir / "calibrate.toml")
       << pbm_case("spectrum_6p25.csv") << R"(
 [calibration]
+x_tolerance = 1e-6  # normalised: < 1e-5 relative on the log-scaled λ, σ∞
+f_relative_tolerance = 1e-10
 starts = 4
 seed = 5
-x_tolerance = 1e-6
-f_relative_tolerance = 1e-10
-f_tolerance = 1e-14
-max_evaluations = 400
 )" << calibration_parameter("rate.lambda", 1e-4, 1e-2)
       << calibration_parameter("rate.sigma_inf", 5e3, 1e5) << data;
   return dir / "calibrate.toml";

@@ -3,10 +3,12 @@
 
 Reads, under OUTPUT (examples/mixer_pbm/output by default):
   sector_<tag>/grid_statistics_spectrum.csv   ṅ(σ) per primary particle (columns by header)
+  sector_<tag>/grid_statistics.csv           for the height of the bed's mass centre
   sector_<tag>/timeseries.csv                 for the shaft power (optional)
   calibration/fit.csv                         measured vs simulated passing (optional)
 Prints, per tip speed, the spectrum's summary — the mean contact frequency per particle
-ṅ_tot = ∫ ṅ dσ, the mean particle pressure ∫ σ ṅ dσ / ṅ_tot, the frequency above 30 kPa — and
+ṅ_tot = ∫ ṅ dσ, the mean particle pressure ∫ σ ṅ dσ / ṅ_tot, the frequency above 30 kPa —, the
+height of the bed's mass centre in the grid (cells weighted by their mean particle volume) and
 the whole-vessel shaft power (blades + shaft, × 3 sectors, mean over t ≥ WINDOW_START), as CSV.
 Draws OUTPUT/three_speeds.png: ṅ(σ), the tail ∫_σ ṅ dσ (the rate b = λ × tail at σ = σ50), and
 the synthetic data against the joint fit.
@@ -37,6 +39,12 @@ def summary(spectrum):
     return total, mean_p, high
 
 
+def bed_height(path):
+    rows = list(csv.DictReader(open(path)))
+    m = [float(r["solid_fraction [-]"]) * float(r["volume [m3]"]) for r in rows]
+    return sum(a * float(r["centre_axial [m]"]) for a, r in zip(m, rows)) / sum(m)
+
+
 def shaft_power(path, start):
     if not os.path.exists(path):
         return float("nan")
@@ -55,13 +63,14 @@ def main():
     a = ap.parse_args()
     spectra = {}
     print("tip_speed [m/s],contact_frequency [1/s],mean_particle_pressure [Pa],"
-          "frequency_above_30kPa [1/s],shaft_power [W]")
+          "frequency_above_30kPa [1/s],bed_height [m],shaft_power [W]")
     for tag, v in SPEEDS:
         d = os.path.join(a.output, f"sector_{tag}")
         spectra[tag] = read_spectrum(os.path.join(d, "grid_statistics_spectrum.csv"))
         total, mean_p, high = summary(spectra[tag])
         power = shaft_power(os.path.join(d, "timeseries.csv"), a.window_start)
-        print(f"{v:g},{total:.6g},{mean_p:.6g},{high:.6g},{power:.6g}")
+        height = bed_height(os.path.join(d, "grid_statistics.csv"))
+        print(f"{v:g},{total:.6g},{mean_p:.6g},{high:.6g},{height:.6g},{power:.6g}")
     if a.no_plot:
         return
     import matplotlib
@@ -72,15 +81,16 @@ def main():
     for tag, v in SPEEDS:
         s, n, w = spectra[tag]
         c = colours[tag]
-        ax[0].semilogy([x / 1e3 for x in s], [max(y, 1e-12) for y in n], color=c,
-                       label=f"{v:g} m/s")
+        # empty bins (no cell sample at that pressure) are left out of the log plot
+        ax[0].semilogy([x / 1e3 for x, y in zip(s, n) if y > 0], [y for y in n if y > 0], ".-",
+                       color=c, label=f"{v:g} m/s", ms=4, lw=0.8)
         tail, acc = [], 0.0
         for y in reversed(n):
             acc += y * w
             tail.append(acc)
         tail.reverse()
-        ax[1].semilogy([(x - w / 2) / 1e3 for x in s], [max(t, 1e-6) for t in tail], color=c,
-                       label=f"{v:g} m/s")
+        ax[1].semilogy([(x - w / 2) / 1e3 for x, t in zip(s, tail) if t > 0],
+                       [t for t in tail if t > 0], color=c, label=f"{v:g} m/s")
     ax[0].set(xlabel="particle pressure σ (kPa)", ylabel="ṅ(σ) per primary particle (1/(s Pa))",
               title="DEM stress–frequency spectra")
     ax[1].set(xlabel="σ (kPa)", ylabel="∫_σ ṅ dσ (1/s)",

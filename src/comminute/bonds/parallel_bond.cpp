@@ -174,8 +174,13 @@ struct Batch {
 
 // The arithmetic of a batch of n bonds (vectorised; an AVX2 version besides the baseline one,
 // chosen once by the processor: the same operations, so the same results).
-[[gnu::target_clones("avx2", "default")]] void advance_batch(const ParallelBond& law, Batch& t,
-                                                             std::size_t n, double dt) {
+#if defined(COMMINUTE_AVX2_CLONES)
+#define COMMINUTE_VECTOR_CLONES [[gnu::target_clones("avx2", "default")]]
+#else
+#define COMMINUTE_VECTOR_CLONES
+#endif
+COMMINUTE_VECTOR_CLONES void advance_batch(const ParallelBond& law, Batch& t, std::size_t n,
+                                           double dt) {
   for (std::size_t k = 0; k < n; ++k) {
     const Vec3 last{t.nx[k], t.ny[k], t.nz[k]};
     const BondKinematics km = bond_kinematics(

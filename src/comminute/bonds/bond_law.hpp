@@ -65,6 +65,11 @@ struct BondStep {
   Vec3* force = nullptr;     // N, on j (i gets -force); zero for a skipped or failed bond
   Vec3* torque_i = nullptr;  // N m, i gets -torque_i (moment of the force about x_i + moment)
   Vec3* torque_j = nullptr;  // N m, j gets +torque_j
+  // When set (one thread), the loads go straight onto the particles' force and torque (by slot)
+  // instead of into force/torque_i/torque_j: bond by bond in bond order, which is the order in
+  // which the per-particle fold of the arrays adds them, so the sums are the same bit for bit.
+  Vec3* particle_force = nullptr;
+  Vec3* particle_torque = nullptr;
 };
 
 // What a range of bonds adds up to in one step (summed in bond order within the range).
@@ -95,22 +100,25 @@ class BondLaw {
 using BondLawRegistry = Registry<BondLaw, const CaseTable&>;
 
 // The rotation that takes unit vector a onto unit vector b (about a x b), made once and applied
-// to each vector a bond stores (inline: it runs for every bond in every step).
+// to each vector a bond stores (inline: it runs for every bond in every step). Without branches,
+// so that a loop over bonds vectorises: the reciprocal is formed always and a half turn (no
+// rotation defined) selects v unturned.
 class BondTurn {
  public:
   BondTurn(const Vec3& a, const Vec3& b)
-      : k_(cross(a, b)), c_(dot(a, b)), per_1c_(c_ > -1.0 + 1e-12 ? 1.0 / (1.0 + c_) : 0.0) {}
+      : k_(cross(a, b)), c_(dot(a, b)), per_1c_(1.0 / (1.0 + c_)), defined_(c_ > -1.0 + 1e-12) {}
   // Rodrigues' formula with k = a x b (|k| = sin θ), c = a·b = cos θ:
   // R v = c v + k x v + k (k·v) / (1 + c)
   Vec3 operator()(const Vec3& v) const {
-    if (c_ <= -1.0 + 1e-12) return v;  // a half turn in one step: no rotation is defined
-    return c_ * v + cross(k_, v) + k_ * (dot(k_, v) * per_1c_);
+    const Vec3 r = c_ * v + cross(k_, v) + k_ * (dot(k_, v) * per_1c_);
+    return {defined_ ? r.x : v.x, defined_ ? r.y : v.y, defined_ ? r.z : v.z};
   }
 
  private:
   Vec3 k_;
   double c_;
   double per_1c_;  // 1 / (1 + c), once for every vector turned
+  bool defined_;   // not a half turn
 };
 
 // Rotates v by the rotation that takes unit vector a onto unit vector b (about a x b).

@@ -8,6 +8,7 @@
 
 #include "comminute/bonds/bond_step.hpp"
 #include "comminute/core/error.hpp"
+#include "comminute/core/parallel.hpp"
 #include "comminute/engine/contact_stress.hpp"
 #include "comminute/engine/parallel_threshold.hpp"
 #include "comminute/engine/simulation.hpp"
@@ -155,11 +156,24 @@ void BondsModule::apply(Simulation& sim) {
     index_by_particle(p.owned());
   }
   // First the bond laws, range by range on all threads, then the loads onto the particles, per
-  // particle in bond order: sums and results do not depend on the thread count.
+  // particle in bond order: sums and results do not depend on the thread count. On one thread the
+  // laws hand the loads straight to the particles in bond order, the same additions in the same
+  // order, without the per-bond load arrays (unless a stress measurement reads them).
   const std::size_t n_bonds = bonds_.size();
-  force_.resize(n_bonds);
-  torque_i_.resize(n_bonds);
-  torque_j_.resize(n_bonds);
+  ContactStress* stress = sim.contacts().stress();
+  const bool measured = stress && stress->armed();
+  const bool serial = n_bonds < kParallelMin || max_threads() == 1;
+  const bool direct = serial && !measured;
+  if (direct) {
+    for (std::vector<Vec3>* a : {&force_, &torque_i_, &torque_j_}) {  // not used: freed
+      a->clear();
+      a->shrink_to_fit();
+    }
+  } else {
+    force_.resize(n_bonds);
+    torque_i_.resize(n_bonds);
+    torque_j_.resize(n_bonds);
+  }
   const std::size_t ranges = (n_bonds + kRange - 1) / kRange;
   range_sums_.assign(ranges, {});
   BondStep st;
@@ -175,15 +189,19 @@ void BondsModule::apply(Simulation& sim) {
   st.force = force_.data();
   st.torque_i = torque_i_.data();
   st.torque_j = torque_j_.data();
+  if (direct) {
+    st.particle_force = p.f.data();
+    st.particle_torque = p.t.data();
+  }
   const BondLaw& law = *law_;
   const auto n_ranges = static_cast<std::int64_t>(ranges);
-#pragma omp parallel for schedule(static) if (n_bonds >= kParallelMin)
+#pragma omp parallel for schedule(static) if (!serial)
   for (std::int64_t r = 0; r < n_ranges; ++r) {
     const std::size_t begin = static_cast<std::size_t>(r) * kRange;
     range_sums_[static_cast<std::size_t>(r)] =
         law.update_range(st, begin, std::min(begin + kRange, n_bonds));
   }
-  add_to_particles(p);
+  if (!direct) add_to_particles(p);
   double elastic = 0;
   std::size_t failed = 0;
   for (const BondStepSums& r : range_sums_) {
@@ -194,8 +212,7 @@ void BondsModule::apply(Simulation& sim) {
   sim.ledger.bond_elastic = elastic;
   // a statistics module measuring this step's Love–Weber stress counts the bonds' forces too: a
   // bond transmits force between its particles like a contact, at its contact point
-  ContactStress* stress = sim.contacts().stress();
-  if (stress && stress->armed()) {
+  if (measured) {
     for (std::size_t b = 0; b < n_bonds; ++b) {
       if (gone_[b]) continue;
       const std::uint32_t i = bonds_.slot_i[b], j = bonds_.slot_j[b];

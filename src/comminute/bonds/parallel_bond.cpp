@@ -40,62 +40,96 @@ class ParallelBond final : public BondLaw {
     return s;
   }
 
-  BondLoad update(BondState& s, const BondMotion& m) const override { return advance(s, m); }
-
-  // update(), inlined into the loop of update_range (bond_step.hpp)
-  [[gnu::always_inline]] BondLoad advance(BondState& s, const BondMotion& m) const {
+  BondLoad update(BondState& s, const BondMotion& m) const override {
     if (s.failed != FailureMode::none) return {};
-    const double r = s.radius;
+    Vec3 shear_force = s.shear_force, moment = s.moment;
+    double tension = 0, energy = 0, fails = 0;
+    advance(s.normal, s.radius, s.length0, s.tensile_strength, s.shear_strength, m, shear_force,
+            moment, tension, energy, fails);
+    s.normal = m.normal;
+    s.shear_force = shear_force;
+    s.moment = moment;
+    s.strain_energy = energy;
+    if (fails != 0) {
+      fail(s, tension);
+      return {};
+    }
+    return {-tension * m.normal + shear_force, moment};
+  }
+
+  // The arithmetic of update() for an intact bond, without branches, so that the batch of
+  // update_range vectorises it: the stored shear force and moment (in, out) turned into the new
+  // frame and advanced, the normal force (tension on j > 0), the strain energy, and whether the
+  // bond fails (1) or not (0).
+  [[gnu::always_inline]] void advance(const Vec3& last_normal, double r, double length0,
+                                      double tensile_strength, double shear_strength,
+                                      const BondMotion& m, Vec3& shear_force, Vec3& moment,
+                                      double& tension, double& energy, double& fails) const {
     const double area = std::numbers::pi * r * r;
     const double inertia = 0.25 * area * r * r;  // I = πR̄⁴/4
     const double polar = 2 * inertia;            // J = πR̄⁴/2
-    // one division per bond: 1/A, then 1/I = 4π/A², 1/J = 2π/A²
+    // one division: 1/A, then 1/I = 4π/A², 1/J = 2π/A²
     const double per_area = 1.0 / area;
     const double per_polar = 2 * std::numbers::pi * per_area * per_area;
     const double per_inertia = 2 * per_polar;
     // stored shear force and moment turn with the bond into the new frame
-    const BondTurn turn(s.normal, m.normal);
-    s.shear_force = turn(s.shear_force);
-    s.moment = turn(s.moment);
-    s.normal = m.normal;
+    const BondTurn turn(last_normal, m.normal);
+    shear_force = turn(shear_force);
+    moment = turn(moment);
     const Vec3& n = m.normal;
     const Vec3 twist = dot(m.rotation_increment, n) * n;
     const Vec3 bend = m.rotation_increment - twist;
     // Potyondy & Cundall, Int. J. Rock Mech. Min. Sci. 41 (2004) 1329: ΔF̄s = -k̄s A ΔUs, ΔM̄n = -k̄s J
     // Δθn, ΔM̄s = -k̄n I Δθs
-    s.shear_force -= ks_ * area * m.slip_increment;
-    s.shear_force -= dot(s.shear_force, n) * n;
-    s.moment -= ks_ * polar * twist + kn_ * inertia * bend;
+    shear_force -= ks_ * area * m.slip_increment;
+    shear_force -= dot(shear_force, n) * n;
+    moment -= ks_ * polar * twist + kn_ * inertia * bend;
     // normal force on j from the total elongation (tension pulls j towards i)
-    const double elongation = m.length - s.length0;
-    const double tension = kn_ * area * elongation;
+    const double elongation = m.length - length0;
+    tension = kn_ * area * elongation;
+    const double mn = dot(moment, n);
+    const Vec3 ms = moment - mn * n;
+    const double fs2 = norm2(shear_force), ms2 = norm2(ms);
+    // ½ (F̄n²/(k̄n A) + |F̄s|²/(k̄s A) + M̄n²/(k̄s J) + |M̄s|²/(k̄n I)), F̄n²/(k̄n A) = F̄n δ
+    energy = 0.5 * (tension * elongation + fs2 * per_area * per_ks_ +
+                    mn * mn * per_polar * per_ks_ + ms2 * per_inertia * per_kn_);
+    // Potyondy & Cundall, Int. J. Rock Mech. Min. Sci. 41 (2004) 1329: σ = -F̄n/A + |M̄s| R̄/I, τ =
+    // |F̄s|/A + |M̄n| R̄/J; σ ≥ σ̄c as |M̄s| R̄/I ≥ σ̄c − F̄n,tension/A, squared where the right side is
+    // positive (no roots; stress() forms σ and τ for a bond that fails)
+    const double tensile_left = tensile_strength - tension * per_area;
+    const double bend_lever = r * per_inertia;
+    const double shear_left = shear_strength - std::abs(mn) * r * per_polar;
+    const bool tensile =
+        (tensile_left <= 0) | (ms2 * bend_lever * bend_lever >= tensile_left * tensile_left);
+    const bool shear = (shear_left <= 0) | (fs2 * per_area * per_area >= shear_left * shear_left);
+    fails = (tensile | shear) ? 1.0 : 0.0;
+  }
+
+  // Marks bond s (its state advanced by advance(), which found it failing) failed: the mode from
+  // the larger of σ/σ̄c and τ/τ̄c, the strain energy released, nothing carried any more.
+  void fail(BondState& s, double tension) const {
+    const double r = s.radius, area = std::numbers::pi * r * r;
+    const double per_area = 1.0 / area;
+    const double per_polar = 2 * std::numbers::pi * per_area * per_area;
+    const double per_inertia = 2 * per_polar;
+    const Vec3& n = s.normal;
     const double mn = dot(s.moment, n);
     const Vec3 ms = s.moment - mn * n;
-    const double fs2 = norm2(s.shear_force), ms2 = norm2(ms);
-    // ½ (F̄n²/(k̄n A) + |F̄s|²/(k̄s A) + M̄n²/(k̄s J) + |M̄s|²/(k̄n I)), F̄n²/(k̄n A) = F̄n δ
-    s.strain_energy = 0.5 * (tension * elongation + fs2 * per_area * per_ks_ +
-                             mn * mn * per_polar * per_ks_ + ms2 * per_inertia * per_kn_);
     // Potyondy & Cundall, Int. J. Rock Mech. Min. Sci. 41 (2004) 1329: σ = -F̄n/A + |M̄s| R̄/I, τ =
     // |F̄s|/A + |M̄n| R̄/J
-    const double sigma = tension * per_area + std::sqrt(ms2) * r * per_inertia;
-    const double tau = std::sqrt(fs2) * per_area + std::abs(mn) * r * per_polar;
-    if (sigma >= s.tensile_strength || tau >= s.shear_strength) {
-      const double load_t = sigma / s.tensile_strength, load_s = tau / s.shear_strength;
-      s.failed = load_t >= load_s ? FailureMode::tensile : FailureMode::shear;
-      s.damage = 1.0;
-      s.dissipated += s.strain_energy;  // the strain energy is released when the bond fails
-      s.strain_energy = 0;
-      s.shear_force = {};
-      s.moment = {};
-      return {};
-    }
-    return {-tension * n + s.shear_force, s.moment};
+    const double sigma = tension * per_area + norm(ms) * r * per_inertia;
+    const double tau = norm(s.shear_force) * per_area + std::abs(mn) * r * per_polar;
+    const double load_t = sigma / s.tensile_strength, load_s = tau / s.shear_strength;
+    s.failed = load_t >= load_s ? FailureMode::tensile : FailureMode::shear;
+    s.damage = 1.0;
+    s.dissipated += s.strain_energy;  // the strain energy is released when the bond fails
+    s.strain_energy = 0;
+    s.shear_force = {};
+    s.moment = {};
   }
 
   BondStepSums update_range(const BondStep& step, std::size_t begin,
-                            std::size_t end) const override {
-    return update_bonds(*this, step, begin, end);
-  }
+                            std::size_t end) const override;
 
   double stiffness(const BondState& s) const override {
     return std::max(kn_, ks_) * std::numbers::pi * s.radius * s.radius;
@@ -113,6 +147,136 @@ class ParallelBond final : public BondLaw {
   double kn_, ks_, sigma_, tau_, sigma_sd_, tau_sd_, lambda_;
   double per_kn_, per_ks_;  // 1/k̄n, 1/k̄s (m/Pa)
 };
+
+// update_range() runs the bonds in batches of structure-of-arrays: the particles' and the bonds'
+// values are gathered bond by bond, the arithmetic (bond_kinematics, advance) runs as one loop over
+// the batch that the compiler vectorises, and the results go back bond by bond, in bond order. The
+// same operations in the same order as update(): vector lanes round as scalars do (no fused
+// multiply-add, no reassociation), so the batch equals one update() per bond bit for bit.
+constexpr std::size_t kBatch = 32;
+constexpr std::size_t kAhead = 16;  // bonds ahead whose memory is fetched during the gather
+
+struct Batch {
+  // in: x_j − x_i, radii, v_j − v_i, spins, and the bond's stored state
+  double dx[kBatch], dy[kBatch], dz[kBatch], ri[kBatch], rj[kBatch];
+  double dvx[kBatch], dvy[kBatch], dvz[kBatch];
+  double wix[kBatch], wiy[kBatch], wiz[kBatch], wjx[kBatch], wjy[kBatch], wjz[kBatch];
+  double nx[kBatch], ny[kBatch], nz[kBatch];  // in: last normal; out: the normal now
+  double fx[kBatch], fy[kBatch], fz[kBatch];  // stored shear force, in and out
+  double mx[kBatch], my[kBatch], mz[kBatch];  // stored moment, in and out
+  double length0[kBatch], radius[kBatch], tensile[kBatch], shear[kBatch];
+  // out: the normal force, strain energy, failure (1), the load on j and the two torques
+  double tension[kBatch], energy[kBatch], fails[kBatch];
+  double lx[kBatch], ly[kBatch], lz[kBatch];     // force on j
+  double tix[kBatch], tiy[kBatch], tiz[kBatch];  // torque_i
+  double tjx[kBatch], tjy[kBatch], tjz[kBatch];  // torque_j
+};
+
+// The arithmetic of a batch of n bonds (vectorised; an AVX2 version besides the baseline one,
+// chosen once by the processor: the same operations, so the same results).
+#if defined(COMMINUTE_AVX2_CLONES)
+#define COMMINUTE_VECTOR_CLONES [[gnu::target_clones("avx2", "default")]]
+#else
+#define COMMINUTE_VECTOR_CLONES
+#endif
+COMMINUTE_VECTOR_CLONES void advance_batch(const ParallelBond& law, Batch& t, std::size_t n,
+                                           double dt) {
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec3 last{t.nx[k], t.ny[k], t.nz[k]};
+    const BondKinematics km = bond_kinematics(
+        {t.dx[k], t.dy[k], t.dz[k]}, t.ri[k], t.rj[k], {t.dvx[k], t.dvy[k], t.dvz[k]},
+        {t.wix[k], t.wiy[k], t.wiz[k]}, {t.wjx[k], t.wjy[k], t.wjz[k]}, last, dt);
+    Vec3 shear_force{t.fx[k], t.fy[k], t.fz[k]}, moment{t.mx[k], t.my[k], t.mz[k]};
+    double tension = 0, energy = 0, fails = 0;
+    law.advance(last, t.radius[k], t.length0[k], t.tensile[k], t.shear[k], km.m, shear_force,
+                moment, tension, energy, fails);
+    const Vec3& n_now = km.m.normal;
+    const Vec3 load = -tension * n_now + shear_force;
+    const Vec3 ti = cross(km.lever_i, load) + moment, tj = cross(km.lever_j, load) + moment;
+    t.nx[k] = n_now.x, t.ny[k] = n_now.y, t.nz[k] = n_now.z;
+    t.fx[k] = shear_force.x, t.fy[k] = shear_force.y, t.fz[k] = shear_force.z;
+    t.mx[k] = moment.x, t.my[k] = moment.y, t.mz[k] = moment.z;
+    t.tension[k] = tension, t.energy[k] = energy, t.fails[k] = fails;
+    t.lx[k] = load.x, t.ly[k] = load.y, t.lz[k] = load.z;
+    t.tix[k] = ti.x, t.tiy[k] = ti.y, t.tiz[k] = ti.z;
+    t.tjx[k] = tj.x, t.tjy[k] = tj.y, t.tjz[k] = tj.z;
+  }
+}
+
+BondStepSums ParallelBond::update_range(const BondStep& st, std::size_t begin,
+                                        std::size_t end) const {
+  BondStepSums sums;
+  Batch t;
+  for (std::size_t b0 = begin; b0 < end; b0 += kBatch) {
+    const std::size_t n = std::min(kBatch, end - b0);
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t b = b0 + k;
+      if (b + kAhead < end) {  // the state records and particles of a bond further on
+        const char* ahead = reinterpret_cast<const char*>(st.state + b + kAhead);
+        __builtin_prefetch(ahead, 1);
+        __builtin_prefetch(ahead + 64, 1);
+        __builtin_prefetch(ahead + 128, 1);
+        const std::uint32_t i = st.slot_i[b + kAhead], j = st.slot_j[b + kAhead];
+        __builtin_prefetch(st.x + i), __builtin_prefetch(st.x + j);
+        __builtin_prefetch(st.v + i), __builtin_prefetch(st.v + j);
+        __builtin_prefetch(st.w + i), __builtin_prefetch(st.w + j);
+      }
+      const BondState& s = st.state[b];
+      Vec3 d = s.normal * s.length0, dv, wi, wj;
+      double ri = s.radius, rj = s.radius;  // a gone bond: finite values, its results unused
+      if (!st.flag[b]) {
+        const std::uint32_t i = st.slot_i[b], j = st.slot_j[b];
+        d = st.x[j] - st.x[i];
+        dv = st.v[j] - st.v[i];
+        wi = st.w[i];
+        wj = st.w[j];
+        ri = st.radius[i];
+        rj = st.radius[j];
+      }
+      t.dx[k] = d.x, t.dy[k] = d.y, t.dz[k] = d.z, t.ri[k] = ri, t.rj[k] = rj;
+      t.dvx[k] = dv.x, t.dvy[k] = dv.y, t.dvz[k] = dv.z;
+      t.wix[k] = wi.x, t.wiy[k] = wi.y, t.wiz[k] = wi.z;
+      t.wjx[k] = wj.x, t.wjy[k] = wj.y, t.wjz[k] = wj.z;
+      t.nx[k] = s.normal.x, t.ny[k] = s.normal.y, t.nz[k] = s.normal.z;
+      t.fx[k] = s.shear_force.x, t.fy[k] = s.shear_force.y, t.fz[k] = s.shear_force.z;
+      t.mx[k] = s.moment.x, t.my[k] = s.moment.y, t.mz[k] = s.moment.z;
+      t.length0[k] = s.length0, t.radius[k] = s.radius;
+      t.tensile[k] = s.tensile_strength, t.shear[k] = s.shear_strength;
+    }
+    advance_batch(*this, t, n, st.dt);
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t b = b0 + k;
+      BondState& s = st.state[b];
+      if (st.flag[b]) {  // gone: nothing
+        deliver_nothing(st, b);
+        continue;
+      }
+      if (s.failed != FailureMode::none) {  // failed before: nothing, as update_bonds() does
+        st.flag[b] = 2;
+        ++sums.failed;
+        deliver(st, b, {}, {}, {});
+        continue;
+      }
+      s.normal = {t.nx[k], t.ny[k], t.nz[k]};
+      s.shear_force = {t.fx[k], t.fy[k], t.fz[k]};
+      s.moment = {t.mx[k], t.my[k], t.mz[k]};
+      s.strain_energy = t.energy[k];
+      if (t.fails[k] != 0) {
+        const double before = s.dissipated;
+        fail(s, t.tension[k]);
+        sums.released += s.dissipated - before;
+        st.flag[b] = 2;
+        ++sums.failed;
+        deliver(st, b, {}, {}, {});  // zeros, as the fold of the arrays adds them
+        continue;
+      }
+      sums.elastic += t.energy[k];
+      deliver(st, b, {t.lx[k], t.ly[k], t.lz[k]}, {t.tix[k], t.tiy[k], t.tiz[k]},
+              {t.tjx[k], t.tjy[k], t.tjz[k]});
+    }
+  }
+  return sums;
+}
 
 std::unique_ptr<BondLaw> make(const CaseTable& t) {
   return std::make_unique<ParallelBond>(t);

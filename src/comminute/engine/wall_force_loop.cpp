@@ -8,6 +8,10 @@
 
 namespace comminute {
 
+namespace {
+constexpr std::size_t kAhead = 8;  // candidates between a particle's prefetch and its look-up
+}  // namespace
+
 void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
                         const std::vector<std::unique_ptr<Wall>>& walls,
                         const std::vector<WallContactRecord>& candidates,
@@ -32,6 +36,7 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
   ContactStress* cs = pipeline.stress();
   const bool armed = cs && cs->armed();
   const bool list = armed && cs->contact_list_wanted();
+  const bool rolling = pipeline.has_rolling();
 #pragma omp parallel num_threads(nt)
   {
     const int t = thread_id();
@@ -71,10 +76,12 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       ck.overlap = overlap;
       ck.overlap_rate = -vn;
       ck.tangential_velocity = vrel - vn * nrm;
-      ck.relative_angular_velocity = p.w[i];
       ck.effective_radius = p.radius[i];
       ck.effective_mass = p.mass[i];
-      ck.effective_inertia = p.inertia[i];
+      if (rolling) {  // read by the rolling models only (as in the pair loop)
+        ck.relative_angular_velocity = p.w[i];
+        ck.effective_inertia = p.inertia[i];
+      }
       const PairParameters& pp = materials.pair(p.material[i], w.material);
       ContactForces out;
       pipeline.evaluate(ck, pp, StateRef{&slots, q}, out);
@@ -99,6 +106,20 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       rec.candidate = static_cast<std::uint32_t>(q);
       mine.touching.push_back(rec);
     };
+    // the particles near walls are scattered through the store: the fields of the particle
+    // kAhead candidates on are asked for while this one's contacts are looked up (their loads
+    // were most of the loop's samples on the drum)
+    auto prefetch_ahead = [&](std::uint32_t a) {
+      __builtin_prefetch(&p.x[a]);
+      __builtin_prefetch(&p.radius[a]);
+      __builtin_prefetch(&p.v[a]);
+      __builtin_prefetch(&p.w[a]);
+      __builtin_prefetch(&p.mass[a]);
+      __builtin_prefetch(&p.material[a]);
+      __builtin_prefetch(&p.f[a], 1);
+      __builtin_prefetch(&p.t[a], 1);
+      if (rolling) __builtin_prefetch(&p.inertia[a]);
+    };
     auto& found = mine.found;
     auto& hits = mine.hits;
     std::size_t q = begin[t];
@@ -107,6 +128,7 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       // passing to an adjacent feature of the same wall can take over the old one's history
       std::size_t end = q + 1;
       while (end < begin[t + 1] && candidates[end].particle == candidates[q].particle) ++end;
+      prefetch_ahead(candidates[std::min(q + kAhead, begin[t + 1] - 1)].particle);
       hits.assign(end - q, WallContact{{}, {}, 0, 0, -1});
       for (std::size_t k = q; k < end; ++k) {
         const WallContactRecord& c = candidates[k];

@@ -8,10 +8,6 @@
 
 namespace comminute {
 
-namespace {
-constexpr std::size_t kAhead = 8;  // candidates between a particle's prefetch and its look-up
-}  // namespace
-
 void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
                         const std::vector<std::unique_ptr<Wall>>& walls,
                         const std::vector<WallContactRecord>& candidates,
@@ -106,20 +102,6 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       rec.candidate = static_cast<std::uint32_t>(q);
       mine.touching.push_back(rec);
     };
-    // the particles near walls are scattered through the store: the fields of the particle
-    // kAhead candidates on are asked for while this one's contacts are looked up (their loads
-    // were most of the loop's samples on the drum)
-    auto prefetch_ahead = [&](std::uint32_t a) {
-      __builtin_prefetch(&p.x[a]);
-      __builtin_prefetch(&p.radius[a]);
-      __builtin_prefetch(&p.v[a]);
-      __builtin_prefetch(&p.w[a]);
-      __builtin_prefetch(&p.mass[a]);
-      __builtin_prefetch(&p.material[a]);
-      __builtin_prefetch(&p.f[a], 1);
-      __builtin_prefetch(&p.t[a], 1);
-      if (rolling) __builtin_prefetch(&p.inertia[a]);
-    };
     auto& found = mine.found;
     auto& hits = mine.hits;
     std::size_t q = begin[t];
@@ -128,7 +110,6 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       // passing to an adjacent feature of the same wall can take over the old one's history
       std::size_t end = q + 1;
       while (end < begin[t + 1] && candidates[end].particle == candidates[q].particle) ++end;
-      prefetch_ahead(candidates[std::min(q + kAhead, begin[t + 1] - 1)].particle);
       hits.assign(end - q, WallContact{{}, {}, 0, 0, -1});
       for (std::size_t k = q; k < end; ++k) {
         const WallContactRecord& c = candidates[k];

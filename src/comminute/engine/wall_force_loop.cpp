@@ -32,6 +32,7 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
   ContactStress* cs = pipeline.stress();
   const bool armed = cs && cs->armed();
   const bool list = armed && cs->contact_list_wanted();
+  const bool rolling = pipeline.has_rolling();
 #pragma omp parallel num_threads(nt)
   {
     const int t = thread_id();
@@ -71,10 +72,12 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       ck.overlap = overlap;
       ck.overlap_rate = -vn;
       ck.tangential_velocity = vrel - vn * nrm;
-      ck.relative_angular_velocity = p.w[i];
       ck.effective_radius = p.radius[i];
       ck.effective_mass = p.mass[i];
-      ck.effective_inertia = p.inertia[i];
+      if (rolling) {  // read by the rolling models only (as in the pair loop)
+        ck.relative_angular_velocity = p.w[i];
+        ck.effective_inertia = p.inertia[i];
+      }
       const PairParameters& pp = materials.pair(p.material[i], w.material);
       ContactForces out;
       pipeline.evaluate(ck, pp, StateRef{&slots, q}, out);

@@ -132,10 +132,16 @@ void MeshSurface::near_triangles(const Vec3& x, double reach,
                                  std::vector<std::uint32_t>& out) const {
   thread_local std::vector<std::uint32_t> near;
   near.clear();
-  gather(x, reach, near);
+  const Vec3 d{reach, reach, reach};
+  bins_.query(x - d, x + d, near);
+  // the bins list many triangles (repeated across cells) and few are within reach: those few are
+  // sorted and made unique, not the whole gathered list (the same ascending list as gather())
+  const std::size_t first = out.size();
   for (std::uint32_t t : near)
     if (!beyond(t, x, reach) && norm(x - closest(t, x).point) < reach * (1 + kReachSlack))
       out.push_back(t);
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
+  out.erase(std::unique(out.begin() + static_cast<std::ptrdiff_t>(first), out.end()), out.end());
 }
 
 void MeshSurface::contacts(const Vec3& x, double r, double margin,

@@ -113,6 +113,64 @@ TEST(ContactState, GatherKeepsOrderAndStartsNewContactsFresh) {
   EXPECT_EQ(f.s.active[0], 0);
 }
 
+// Gathers of both kinds: forward plans (each carried contact k takes old from[k] >= k: breakage's
+// in-place updates, pairs of removed particles dropped and new ones appended or interleaved), run
+// in place, and any other order (a wall-candidate rebuild), copied. Each must give exactly contact
+// k = old from[k], or fresh for none. A forward plan within the capacity must not move the arrays
+// (no second column is allocated: the memory the in-place path exists for).
+TEST(ContactState, GatherInPlaceEqualsTheCopyForAnyPlan) {
+  constexpr std::uint32_t none = ContactStateStore::none;
+  std::mt19937 gen(777);
+  for (int trial = 0; trial < 300; ++trial) {
+    ContactStateStore s;
+    const SlotId spring = s.declare_vec3("spring", SwapRule::negate);
+    const SlotId stiff = s.declare_f64("stiffness", SwapRule::keep);
+    const std::size_t n_old = 40;
+    s.carry({}, {}, {}, 48);  // capacity for 54
+    s.carry({}, {}, {}, n_old);
+    for (std::size_t k = 0; k < n_old; ++k) {
+      s.at(k).vec3(spring) = {1.0 + static_cast<double>(k), -0.5 * static_cast<double>(k), 7.0};
+      s.at(k).f64(stiff) = 100.0 + static_cast<double>(k);
+      s.active[k] = 1;
+    }
+    const bool forward = trial % 2 == 0;
+    std::vector<std::uint32_t> from;
+    if (forward) {
+      // old contacts kept in order (about 3 in 4), a fresh one now and then where it keeps
+      // from[k] >= k, and fresh ones appended, up to 54 in all
+      for (std::uint32_t o = 0; o < n_old; ++o) {
+        if (gen() % 4 == 0) continue;
+        if (from.size() < o && gen() % 5 == 0) from.push_back(none);
+        from.push_back(o);
+      }
+      const std::size_t extra = gen() % (55 - from.size());
+      from.insert(from.end(), extra, none);
+    } else {
+      const std::size_t n_new = 1 + gen() % 54;
+      for (std::size_t k = 0; k < n_new; ++k)
+        from.push_back(gen() % 4 == 0 ? none : static_cast<std::uint32_t>(gen() % n_old));
+    }
+    const Vec3* before = s.slots().vec3[spring];
+    s.gather(from);
+    ASSERT_EQ(s.size(), from.size());
+    if (forward) {
+      EXPECT_EQ(s.slots().vec3[spring], before) << trial << ": the column moved";
+    }
+    for (std::size_t k = 0; k < from.size(); ++k) {
+      if (from[k] == none) {
+        EXPECT_EQ(s.at(k).vec3(spring), Vec3{}) << trial << " " << k;
+        EXPECT_EQ(s.at(k).f64(stiff), 0.0) << trial << " " << k;
+        EXPECT_EQ(s.active[k], 0) << trial << " " << k;
+        continue;
+      }
+      const double o = static_cast<double>(from[k]);
+      EXPECT_EQ(s.at(k).vec3(spring), (Vec3{1.0 + o, -0.5 * o, 7.0})) << trial << " " << k;
+      EXPECT_EQ(s.at(k).f64(stiff), 100.0 + o) << trial << " " << k;
+      EXPECT_EQ(s.active[k], 1) << trial << " " << k;
+    }
+  }
+}
+
 TEST(ContactState, ScratchCopiesOneContactAndLeavesTheStoreAlone) {
   Filled f;
   const ContactScratch copy(f.s, 1);

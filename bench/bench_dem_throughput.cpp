@@ -10,20 +10,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
 
-#include "comminute/core/memory.hpp"
 #include "comminute/geometry/mesh_wall.hpp"
-#include "comminute/io/case/dem_case.hpp"
+#include "support/case_bench.hpp"
 
 namespace {
-// Resident set size now (MB), from /proc/self/statm.
+// Resident set size now (MB).
 double rss_mb() {
-  std::ifstream f("/proc/self/statm");
-  double pages = 0, resident = 0;
-  f >> pages >> resident;
-  return resident * 4096.0 / (1024.0 * 1024.0);
+  return static_cast<double>(comminute::bench::status_kb("VmRSS")) / 1024.0;
 }
 
 // Memory of each mesh wall: MeshWall::bytes() sums the capacities of its arrays (vertices,
@@ -57,40 +51,31 @@ void print_extent(const comminute::ParticleStore& p, const comminute::Observable
 
 int main(int argc, char** argv) {
   using namespace comminute;
-  if (argc < 2) {
-    fmt::print(stderr, "usage: {} CASE.toml [warmup=1000] [steps=2000]\n", argv[0]);
-    return 2;
-  }
-  give_back_freed_arrays();  // as the comminute program does
-  const long warm = argc > 2 ? std::atol(argv[2]) : 1000;
-  const long steps = argc > 3 ? std::atol(argv[3]) : 2000;
-  try {
-    io::DemCase c = io::load_plain_dem_case(argv[1]);
-    Simulation& sim = *c.sim;
-    sim.setup();
-    const double rss_setup = rss_mb();
-    print_mesh_memory(sim);
-    sim.run(static_cast<std::uint64_t>(warm));
-    const auto t0 = std::chrono::steady_clock::now();
-    sim.run(static_cast<std::uint64_t>(steps));
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    rusage ru{};
-    getrusage(RUSAGE_SELF, &ru);
-    const Observables o = sim.observe();
-    print_extent(sim.particles, o);
-    const double n = static_cast<double>(sim.particles.size());
-    fmt::print(
-        "N={} threads={} steps={} seconds={:.3f} particle_steps_per_s={:.4g} contacts={} "
-        "wall_contacts={} pairs={} rebuilds={} rss_setup_MB={:.0f} rss_end_MB={:.0f} "
-        "peak_rss_MB={:.0f} "
-        "bytes_per_particle={:.0f}\n",
-        sim.particles.size(), omp_get_max_threads(), steps, s, n * static_cast<double>(steps) / s,
-        o.contacts, o.wall_contacts, sim.pairs().size(), sim.neighbor_rebuilds(), rss_setup,
-        rss_mb(), static_cast<double>(ru.ru_maxrss) / 1024.0,
-        static_cast<double>(ru.ru_maxrss) * 1024.0 / n);
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
-    return 2;
-  }
-  return 0;
+  return bench::run_case_bench(
+      argc, argv, "[warmup=1000] [steps=2000]", {1000, 2000},
+      [](Simulation& sim, const std::vector<long>& counts) {
+        const long warm = counts[0], steps = counts[1];
+        const double rss_setup = rss_mb();
+        print_mesh_memory(sim);
+        sim.run(static_cast<std::uint64_t>(warm));
+        const auto t0 = std::chrono::steady_clock::now();
+        sim.run(static_cast<std::uint64_t>(steps));
+        const double s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        rusage ru{};
+        getrusage(RUSAGE_SELF, &ru);
+        const Observables o = sim.observe();
+        print_extent(sim.particles, o);
+        const double n = static_cast<double>(sim.particles.size());
+        fmt::print(
+            "N={} threads={} steps={} seconds={:.3f} particle_steps_per_s={:.4g} contacts={} "
+            "wall_contacts={} pairs={} rebuilds={} rss_setup_MB={:.0f} rss_end_MB={:.0f} "
+            "peak_rss_MB={:.0f} "
+            "bytes_per_particle={:.0f}\n",
+            sim.particles.size(), omp_get_max_threads(), steps, s,
+            n * static_cast<double>(steps) / s, o.contacts, o.wall_contacts, sim.pairs().size(),
+            sim.neighbor_rebuilds(), rss_setup, rss_mb(),
+            static_cast<double>(ru.ru_maxrss) / 1024.0,
+            static_cast<double>(ru.ru_maxrss) * 1024.0 / n);
+      });
 }

@@ -103,8 +103,8 @@ TEST(BoundedSamplingPlane, CountsOnlyTheCrossingsThroughItsDiscOrRectangle) {
   // the log (disc only): one row per counted crossing, with its direction, mass and diameter
   const auto& log = planes->log();
   ASSERT_EQ(log.size(), in_disc.positive + in_disc.negative);
-  for (const LoggedCrossing& row : log) {
-    EXPECT_EQ(row.plane, 0u);
+  for (const ParticleRecord& row : log) {
+    EXPECT_EQ(row.site, 0u);
     EXPECT_EQ(row.direction, direction[row.id]);
     EXPECT_EQ(row.mass, mass_of[row.id]);
     EXPECT_EQ(row.diameter, row.id == inside ? 2 * 0.1e-3 : 2 * r);

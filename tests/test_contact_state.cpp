@@ -30,6 +30,40 @@ struct Filled {
     }
   }
 };
+
+// A store with a spring (negated on swap) and a stiffness (kept) and room for 54 contacts (later
+// lists of up to 54 are carried or gathered in place), holding 40 active contacts whose values
+// name them: contact k has spring_of(k) and stiffness 100 + k.
+struct Forty {
+  static constexpr std::size_t n = 40;
+  ContactStateStore s;
+  SlotId spring, stiff;
+  static Vec3 spring_of(double k) { return {1.0 + k, -0.5 * k, 7.0}; }
+  // Contact k is fresh (old = none) or holds old contact `old`, its spring negated if reversed.
+  void expect_holds(std::size_t k, std::uint32_t old, bool reversed, int trial) const {
+    if (old == ContactStateStore::none) {
+      EXPECT_EQ(s.at(k).vec3(spring), Vec3{}) << trial << " " << k;
+      EXPECT_EQ(s.at(k).f64(stiff), 0.0) << trial << " " << k;
+      EXPECT_EQ(s.active[k], 0) << trial << " " << k;
+      return;
+    }
+    const Vec3 v = spring_of(static_cast<double>(old));
+    EXPECT_EQ(s.at(k).vec3(spring), reversed ? -v : v) << trial << " " << k;
+    EXPECT_EQ(s.at(k).f64(stiff), 100.0 + static_cast<double>(old)) << trial << " " << k;
+    EXPECT_EQ(s.active[k], 1) << trial << " " << k;
+  }
+  Forty() {
+    spring = s.declare_vec3("spring", SwapRule::negate);
+    stiff = s.declare_f64("stiffness", SwapRule::keep);
+    s.carry({}, {}, {}, 48);  // reserves 48 + 48 / 8 = 54
+    s.carry({}, {}, {}, n);
+    for (std::size_t k = 0; k < n; ++k) {
+      s.at(k).vec3(spring) = spring_of(static_cast<double>(k));
+      s.at(k).f64(stiff) = 100.0 + static_cast<double>(k);
+      s.active[k] = 1;
+    }
+  }
+};
 }  // namespace
 
 TEST(ContactState, CarryAppliesEachSlotsSwapRule) {
@@ -55,17 +89,8 @@ TEST(ContactState, CarryAppliesEachSlotsSwapRule) {
 TEST(ContactState, CarryInPlaceEqualsTheCopyForAnyPlan) {
   std::mt19937 gen(12345);
   for (int trial = 0; trial < 200; ++trial) {
-    ContactStateStore s;
-    const SlotId spring = s.declare_vec3("spring", SwapRule::negate);
-    const SlotId stiff = s.declare_f64("stiffness", SwapRule::keep);
-    const std::size_t n_old = 40;
-    s.carry({}, {}, {}, 48);  // capacity for 54: later lists of up to 54 are carried in place
-    s.carry({}, {}, {}, n_old);
-    for (std::size_t k = 0; k < n_old; ++k) {
-      s.at(k).vec3(spring) = {1.0 + static_cast<double>(k), -0.5 * static_cast<double>(k), 7.0};
-      s.at(k).f64(stiff) = 100.0 + static_cast<double>(k);
-      s.active[k] = 1;
-    }
+    Forty f;
+    const std::size_t n_old = Forty::n;
     const std::size_t n_new = 30 + gen() % 25;  // 30..54: shorter and longer lists
     std::vector<std::uint32_t> sources(n_old), targets(n_new);
     std::iota(sources.begin(), sources.end(), 0u);
@@ -78,24 +103,15 @@ TEST(ContactState, CarryInPlaceEqualsTheCopyForAnyPlan) {
     std::vector<std::uint32_t> to(targets.begin(), targets.begin() + m);
     std::vector<std::uint8_t> reversed(m);
     for (auto& r : reversed) r = static_cast<std::uint8_t>(gen() % 2);
-    s.carry(from, to, reversed, n_new);
-    ASSERT_EQ(s.size(), n_new);
+    f.s.carry(from, to, reversed, n_new);
+    ASSERT_EQ(f.s.size(), n_new);
     std::vector<int> carried_from(n_new, -1);
     for (std::size_t e = 0; e < m; ++e) carried_from[to[e]] = static_cast<int>(e);
     for (std::size_t k = 0; k < n_new; ++k) {
       const int e = carried_from[k];
-      if (e < 0) {
-        EXPECT_EQ(s.at(k).vec3(spring), Vec3{}) << trial << " " << k;
-        EXPECT_EQ(s.at(k).f64(stiff), 0.0) << trial << " " << k;
-        EXPECT_EQ(s.active[k], 0) << trial << " " << k;
-        continue;
-      }
-      const double o = static_cast<double>(from[static_cast<std::size_t>(e)]);
-      const Vec3 old{1.0 + o, -0.5 * o, 7.0};
-      EXPECT_EQ(s.at(k).vec3(spring), reversed[static_cast<std::size_t>(e)] ? -old : old)
-          << trial << " " << k;
-      EXPECT_EQ(s.at(k).f64(stiff), 100.0 + o) << trial << " " << k;
-      EXPECT_EQ(s.active[k], 1) << trial << " " << k;
+      const auto ue = static_cast<std::size_t>(e);
+      f.expect_holds(k, e < 0 ? ContactStateStore::none : from[ue], e >= 0 && reversed[ue] != 0,
+                     trial);
     }
   }
 }
@@ -111,6 +127,45 @@ TEST(ContactState, GatherKeepsOrderAndStartsNewContactsFresh) {
   f.s.clear(0);
   EXPECT_EQ(f.s.at(0).f32(f.overlap), 0.0f);
   EXPECT_EQ(f.s.active[0], 0);
+}
+
+// Gathers of both kinds: forward plans (each carried contact k takes old from[k] >= k: breakage's
+// in-place updates, pairs of removed particles dropped and new ones appended or interleaved), run
+// in place, and any other order (a wall-candidate rebuild), copied. Each must give exactly contact
+// k = old from[k], or fresh for none. A forward plan within the capacity must not move the arrays
+// (no second column is allocated: the memory the in-place path exists for).
+TEST(ContactState, GatherInPlaceEqualsTheCopyForAnyPlan) {
+  constexpr std::uint32_t none = ContactStateStore::none;
+  std::mt19937 gen(777);
+  for (int trial = 0; trial < 300; ++trial) {
+    Forty f;
+    ContactStateStore& s = f.s;
+    const std::size_t n_old = Forty::n;
+    const bool forward = trial % 2 == 0;
+    std::vector<std::uint32_t> from;
+    if (forward) {
+      // old contacts kept in order (about 3 in 4), a fresh one now and then where it keeps
+      // from[k] >= k, and fresh ones appended, up to 54 in all
+      for (std::uint32_t o = 0; o < n_old; ++o) {
+        if (gen() % 4 == 0) continue;
+        if (from.size() < o && gen() % 5 == 0) from.push_back(none);
+        from.push_back(o);
+      }
+      const std::size_t extra = gen() % (55 - from.size());
+      from.insert(from.end(), extra, none);
+    } else {
+      const std::size_t n_new = 1 + gen() % 54;
+      for (std::size_t k = 0; k < n_new; ++k)
+        from.push_back(gen() % 4 == 0 ? none : static_cast<std::uint32_t>(gen() % n_old));
+    }
+    const Vec3* before = s.slots().vec3[f.spring];
+    s.gather(from);
+    ASSERT_EQ(s.size(), from.size());
+    if (forward) {
+      EXPECT_EQ(s.slots().vec3[f.spring], before) << trial << ": the column moved";
+    }
+    for (std::size_t k = 0; k < from.size(); ++k) f.expect_holds(k, from[k], false, trial);
+  }
 }
 
 TEST(ContactState, ScratchCopiesOneContactAndLeavesTheStoreAlone) {

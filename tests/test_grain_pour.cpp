@@ -7,12 +7,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <numbers>
 #include <string>
 
 #include "case_docs_check.hpp"
+#include "case_sections.hpp"
 #include "comminute/bonds/grain_breakage_module.hpp"
 #include "comminute/bonds/grain_placement.hpp"
 #include "comminute/bonds/grain_pour.hpp"
@@ -25,54 +27,27 @@ using namespace comminute;
 
 namespace {
 
-// Ellipsoidal grains of 6 sub-spheres poured from a box 10 mm above nothing (no walls): in free
-// fall nothing loads a grain but its own sub-spheres' contacts. EXTRA holds more [[insert]] keys.
-constexpr const char* kCase = R"([simulation]
-seed = SEED
-end_time = 0.05
-time_step = 1.0e-6
-gravity = [0.0, 0.0, -9.81]
-skin = 1.0e-4
-[contact]
-model = "hertz_mindlin"
-[materials.rice]
-density = 1450.0
-youngs_modulus = 1.0e8
-poisson_ratio = 0.3
-[interaction]
-restitution = 0.3
-friction = 0.4
-[[insert]]
-type = "clusters"
-mode = "pour"
-material = "rice"
-shape = "ellipsoid"
-length = 3.0e-3
-width = 2.0e-3
-thickness = 1.6e-3
-spheres_per_grain = 6
-templates = 2
-rate = 4000.0
-interval = 1.0e-3
-region = { shape = "box", lo = [-0.01, -0.01, 0.0], hi = [0.01, 0.01, 0.01] }
-EXTRA
-[bonds]
-law = "parallel_bond"
-within_grain = true
-gap_tolerance = 8.0e-5
-normal_stiffness = 1.0e11
-shear_stiffness = 4.0e10
-tensile_strength = 1.0e7
-shear_strength = 1.0e7
-)";
+namespace ct = comminute::testing;
 
-std::string replace(std::string s, const std::string& key, const std::string& value) {
-  s.replace(s.find(key), key.size(), value);
-  return s;
+// Ellipsoidal grains of 6 sub-spheres poured from a box 10 mm above nothing (no walls; gravity the
+// default, -9.81 m/s² along z): in free fall nothing loads a grain but its own sub-spheres'
+// contacts. `pour.extra` holds more [[insert]] keys.
+std::string case_text(int seed, const ct::GrainPourKeys& pour) {
+  return ct::dem_sections({static_cast<std::uint64_t>(seed), 0.05, 1.0e-6, 1.0e-4},
+                          {"rice", 1450.0, 1.0e8, 0.3, 0.3, 0.4}) +
+         ct::grain_pour_insert(pour) +
+         ct::parallel_bond_section({8.0e-5, 1.0e11, 4.0e10, 1.0e7, 1.0e7, 0.0, true});
+}
+
+ct::GrainPourKeys pour_with(const std::string& extra, int templates = 2) {
+  ct::GrainPourKeys k;
+  k.extra = extra;
+  k.templates = templates;
+  return k;
 }
 
 std::string case_text(int seed, const std::string& extra) {
-  return replace(replace(kCase, "SEED", std::to_string(seed)), "EXTRA", extra);
+  return case_text(seed, pour_with(extra));
 }
 
 struct Poured {
@@ -156,7 +131,7 @@ TEST(GrainPour, PouredGrainsKeepEveryBondAndTheirTemplateGeometryWhileFalling) {
 
 TEST(GrainPour, PouredMassIsTheCountTimesTheTemplateMass) {
   // by count: 10 grains of two templates; by mass: as many grains as reach 5 template masses
-  Poured by_count(replace(case_text(2, "count = 10"), "templates = 2", "templates = 1"));
+  Poured by_count(case_text(2, pour_with("count = 10", 1)));
   by_count.sim().run(4000);
   ASSERT_EQ(by_count.pour->poured(), 10u);
   const ParticleStore& p = by_count.sim().particles;
@@ -179,7 +154,7 @@ TEST(GrainPour, PouredMassIsTheCountTimesTheTemplateMass) {
 
   // mass target 4.5 grain masses: the pour stops at the grain that reaches it, the 5th
   const std::string target = fmt::format("mass = {:.17g}", 4.5 * mg);
-  Poured by_mass(replace(case_text(2, target), "templates = 2", "templates = 1"));
+  Poured by_mass(case_text(2, pour_with(target, 1)));
   by_mass.sim().run(10000);
   EXPECT_EQ(by_mass.pour->poured(), 5u);
   EXPECT_EQ(by_mass.sim().particles.size(), 30u);
@@ -223,16 +198,12 @@ TEST(GrainPour, OrientationsAreIsotropic) {
   // 3000 grains in one round into a box 20 grain lengths wide (few rejections to bias the
   // orientations); for a uniformly random rotation R every entry has mean 0 and mean square 1/3
   // (E[R] = 0 and E[R_ij²] = 1/3 for the Haar measure on SO(3))
-  const std::string big =
-      "count = 3000\nrate = 1.0e9\nspheres_per_grain = 2\n"
-      "region = { shape = \"box\", lo = [-0.03, -0.03, 0.0], hi = [0.03, 0.03, "
-      "0.06] }";
-  std::string text = case_text(4, big);
-  text = replace(text, "spheres_per_grain = 6\n", "");
-  text = replace(
-      text, "region = { shape = \"box\", lo = [-0.01, -0.01, 0.0], hi = [0.01, 0.01, 0.01] }\n",
-      "");
-  text = replace(text, "rate = 4000.0\n", "");
+  ct::GrainPourKeys big = pour_with("count = 3000");
+  big.rate = 1.0e9;
+  big.spheres_per_grain = 2;
+  big.lo = {-0.03, -0.03, 0.0};
+  big.hi = {0.03, 0.03, 0.06};
+  const std::string text = case_text(4, big);
   Poured c(text);
   while (c.pour->poured() < 3000 && c.sim().time < 3e-3) c.sim().step();
   ASSERT_EQ(c.pour->poured(), 3000u);
@@ -328,18 +299,25 @@ TEST(GrainPour, BadKeysAreRefusedWithFileLineAndKey) {
   }
   // keys of the case text itself: a zero interval, an unknown mode, a missing rate (the table is
   // named, the message names the key)
-  const std::vector<std::array<std::string, 3>> replaced = {
-      {"interval = 1.0e-3", "interval = 0.0", "insert[0].interval"},
-      {"mode = \"pour\"", "mode = \"drip\"", "insert[0].mode"},
-      {"rate = 4000.0", "", "insert[0]"}};
-  for (const auto& [from, to, key] : replaced) {
+  struct Changed {
+    std::function<void(ct::GrainPourKeys&)> change;
+    std::string key;
+    bool names_rate = false;  // the message must name the missing key 'rate'
+  };
+  const std::vector<Changed> changed = {
+      {[](ct::GrainPourKeys& k) { k.interval = 0.0; }, "insert[0].interval"},
+      {[](ct::GrainPourKeys& k) { k.mode = "drip"; }, "insert[0].mode"},
+      {[](ct::GrainPourKeys& k) { k.rate = 0.0; }, "insert[0]", true}};  // rate 0: left out
+  for (const auto& [change, key, names_rate] : changed) {
+    ct::GrainPourKeys k = pour_with("count = 4");
+    change(k);
     try {
-      Poured c(replace(case_text(1, "count = 4"), from, to));
-      ADD_FAILURE() << "accepted: " << to;
+      Poured c(case_text(1, k));
+      ADD_FAILURE() << "accepted a change of " << key;
     } catch (const InputError& e) {
       EXPECT_EQ(e.key(), key) << e.what();
       EXPECT_GT(e.line(), 0) << e.what();
-      if (to.empty()) {
+      if (names_rate) {
         EXPECT_NE(std::string(e.what()).find("'rate'"), std::string::npos) << e.what();
       }
     }

@@ -57,6 +57,23 @@ std::string parallel_bond_section(const ParallelBondKeys& b) {
   if (b.strength_sd > 0)
     s += fmt::format("tensile_strength_sd = {0}\nshear_strength_sd = {0}\n",
                      toml_number(b.strength_sd));
+  if (b.within_grain) s += "within_grain = true\n";
+  return s;
+}
+
+std::string grain_pour_insert(const GrainPourKeys& k) {
+  std::string s = fmt::format(
+      "[[insert]]\ntype = \"clusters\"\nmode = \"{}\"\nmaterial = \"{}\"\nshape = \"ellipsoid\"\n"
+      "length = {}\nwidth = {}\nthickness = {}\nspheres_per_grain = {}\ntemplates = {}\n"
+      "interval = {}\n",
+      k.mode, k.material, toml_number(k.length), toml_number(k.width), toml_number(k.thickness),
+      k.spheres_per_grain, k.templates, toml_number(k.interval));
+  if (k.rate > 0) s += fmt::format("rate = {}\n", toml_number(k.rate));
+  auto point = [](const std::array<double, 3>& x) {
+    return fmt::format("[{}, {}, {}]", toml_number(x[0]), toml_number(x[1]), toml_number(x[2]));
+  };
+  s += fmt::format("region = {{ shape = \"box\", lo = {}, hi = {} }}\n", point(k.lo), point(k.hi));
+  if (!k.extra.empty()) s += k.extra + "\n";
   return s;
 }
 

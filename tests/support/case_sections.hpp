@@ -1,9 +1,10 @@
 #pragma once
 // Case-file text (TOML) and data files that the tests and the benchmarks build their cases from:
 // the [simulation], [contact], material and [interaction] tables of a one-material DEM case,
-// plane walls, a data-file insertion, a parallel-bond table, a simple cubic lattice of touching
-// spheres and the bonded bed pressed by a piston on it. Numbers are written so that they read
-// back to the same double.
+// plane walls, a data-file insertion, a pour of grain templates, a parallel-bond table, a simple
+// cubic lattice of touching spheres and the bonded bed pressed by a piston on it. Numbers are
+// written so that they read back to the same double.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -58,8 +59,25 @@ struct ParallelBondKeys {
   double tensile_strength = 1e7;   // Pa
   double shear_strength = 1e7;     // Pa
   double strength_sd = 0;          // Pa, of both strengths
+  bool within_grain = false;       // bond only sub-spheres of one grain (clusters)
 };
 std::string parallel_bond_section(const ParallelBondKeys& b);
+
+// [[insert]] of ellipsoidal grain templates (type = "clusters") in a box region; `mode` "pour"
+// places `rate` grains per second every `interval` (rate 0: left out); `extra` holds the table's
+// other keys as TOML lines (the target: count or mass; start, end, layers, velocity, ...).
+struct GrainPourKeys {
+  std::string material = "rice";
+  std::string mode = "pour";
+  double length = 3.0e-3, width = 2.0e-3, thickness = 1.6e-3;  // m, the ellipsoid's axes
+  int spheres_per_grain = 6;
+  int templates = 2;
+  double rate = 4000.0;                                               // grains/s
+  double interval = 1e-3;                                             // s
+  std::array<double, 3> lo{-0.01, -0.01, 0.0}, hi{0.01, 0.01, 0.01};  // m, the region
+  std::string extra;
+};
+std::string grain_pour_insert(const GrainPourKeys& k);
 
 // One [[calibration.parameter]]: a free case key and its bounds (in the key's unit).
 std::string calibration_parameter(std::string_view key, double min, double max);

@@ -2,13 +2,13 @@
 
 namespace comminute::analysis {
 
-ProductSizes product_sizes(const std::vector<RemovedParticle>& log, double t_from, double t_to,
+ProductSizes product_sizes(const std::vector<ParticleRecord>& log, double t_from, double t_to,
                            const std::vector<double>& sieves, std::optional<std::uint32_t> outlet) {
   ProductSizes out;
   out.mass_passing.assign(sieves.size(), 0.0);
   for (const auto& r : log) {
     if (!(r.time > t_from && r.time <= t_to)) continue;
-    if (outlet && r.outlet != *outlet) continue;
+    if (outlet && r.site != *outlet) continue;
     ++out.count;
     out.mass += r.mass;
     for (std::size_t s = 0; s < sieves.size(); ++s)

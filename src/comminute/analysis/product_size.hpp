@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "comminute/engine/outlet.hpp"
+#include "comminute/engine/particle_record.hpp"
 
 namespace comminute::analysis {
 
@@ -20,7 +20,7 @@ struct ProductSizes {
 };
 
 // `outlet`: one outlet's index, or every outlet when empty. Sieves in m, any order.
-ProductSizes product_sizes(const std::vector<RemovedParticle>& log, double t_from, double t_to,
+ProductSizes product_sizes(const std::vector<ParticleRecord>& log, double t_from, double t_to,
                            const std::vector<double>& sieves,
                            std::optional<std::uint32_t> outlet = std::nullopt);
 

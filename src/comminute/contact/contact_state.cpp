@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstring>
 
 #include "comminute/core/error.hpp"
 #include "comminute/core/parallel.hpp"
@@ -33,7 +34,7 @@ SlotId ContactStateStore::declare(std::vector<Column<T>>& cols, const std::strin
   if (cols.size() == Slots::max_slots)
     throw Error(fmt::format("contact-state slot '{}': more than {} slots of one kind", name,
                             Slots::max_slots));
-  cols.push_back({name, swap, std::vector<T>(size(), T{}), {}});
+  cols.push_back({name, swap, std::vector<T>(size(), T{})});
   refresh();
   return static_cast<SlotId>(cols.size() - 1);
 }
@@ -164,16 +165,47 @@ void carry_column(std::vector<T>& data, SwapRule rule, const std::vector<std::ui
     if (!carried_to[q]) data[q] = T{};
 }
 
+// True when every carried contact k takes an old contact from[k] >= k (the in-place updates of
+// breakage: pairs of removed particles dropped, order kept, new pairs appended): a pass in
+// rising k then reads each old value before it is overwritten.
+bool gathers_forward(const std::vector<std::uint32_t>& from) {
+  for (std::size_t k = 0; k < from.size(); ++k)
+    if (from[k] != ContactStateStore::none && from[k] < k) return false;
+  return true;
+}
+
+// Column c of the new list: contact k takes old contact from[k] (none: fresh). A forward gather
+// within the column's capacity moves the values in place, a run of consecutive sources at a time
+// (memmove), so no second column is allocated or kept. Any other gather copies into a new column
+// (reserved 1/8 larger, so that the next lists are gathered in place) and frees the old one.
 template <class T>
-void gather_column(std::vector<T>& data, std::vector<T>& spare,
-                   const std::vector<std::uint32_t>& from, T fresh) {
+void gather_column(std::vector<T>& data, const std::vector<std::uint32_t>& from, T fresh,
+                   bool forward) {
+  constexpr std::uint32_t none = ContactStateStore::none;
   const std::size_t n = from.size();
-  spare.resize(n);
+  if (forward && n <= data.capacity()) {
+    if (n > data.size()) data.resize(n, fresh);  // within the capacity: no copy
+    std::size_t k = 0;
+    while (k < n) {
+      if (from[k] == none) {
+        data[k++] = fresh;
+        continue;
+      }
+      std::size_t e = k + 1;  // [k, e): consecutive sources
+      while (e < n && from[e] != none && from[e] == from[e - 1] + 1) ++e;
+      if (from[k] != k) std::memmove(&data[k], &data[from[k]], (e - k) * sizeof(T));
+      k = e;
+    }
+    data.resize(n);
+    return;
+  }
+  std::vector<T> out;
+  out.reserve(n + n / 8);
+  out.resize(n);
   const int nt = n >= 16384 ? max_threads() : 1;
 #pragma omp parallel for schedule(static) num_threads(nt)
-  for (std::size_t k = 0; k < n; ++k)
-    spare[k] = from[k] == ContactStateStore::none ? fresh : data[from[k]];
-  data.swap(spare);
+  for (std::size_t k = 0; k < n; ++k) out[k] = from[k] == none ? fresh : data[from[k]];
+  data.swap(out);
 }
 }  // namespace
 
@@ -190,18 +222,19 @@ void ContactStateStore::carry(const std::vector<std::uint32_t>& from,
 }
 
 void ContactStateStore::gather(const std::vector<std::uint32_t>& from) {
-  for (auto& c : vec3_) gather_column(c.data, c.spare, from, Vec3{});
-  for (auto& c : f32_) gather_column(c.data, c.spare, from, 0.0f);
-  for (auto& c : f64_) gather_column(c.data, c.spare, from, 0.0);
-  gather_column(active, spare_active_, from, std::uint8_t{0});
+  const bool forward = gathers_forward(from);
+  for (auto& c : vec3_) gather_column(c.data, from, Vec3{}, forward);
+  for (auto& c : f32_) gather_column(c.data, from, 0.0f, forward);
+  for (auto& c : f64_) gather_column(c.data, from, 0.0, forward);
+  gather_column(active, from, std::uint8_t{0}, forward);
   refresh();
 }
 
 ContactStateStore ContactStateStore::same_layout() const {
   ContactStateStore s;
-  for (const auto& c : vec3_) s.vec3_.push_back({c.name, c.swap, {}, {}});
-  for (const auto& c : f32_) s.f32_.push_back({c.name, c.swap, {}, {}});
-  for (const auto& c : f64_) s.f64_.push_back({c.name, c.swap, {}, {}});
+  for (const auto& c : vec3_) s.vec3_.push_back({c.name, c.swap, {}});
+  for (const auto& c : f32_) s.f32_.push_back({c.name, c.swap, {}});
+  for (const auto& c : f64_) s.f64_.push_back({c.name, c.swap, {}});
   s.refresh();
   return s;
 }

@@ -96,8 +96,9 @@ class ContactStateStore {
   // slots of old contact from[e] (transformed by each slot's rule when reversed[e]) and is active.
   void carry(const std::vector<std::uint32_t>& from, const std::vector<std::uint32_t>& to,
              const std::vector<std::uint8_t>& reversed, std::size_t size);
-  // A new list where contact k takes old contact from[k] (none: fresh). Parallel copy into spare
-  // arrays that are then swapped in (kept for the next call).
+  // A new list where contact k takes old contact from[k] (none: fresh). In place when every
+  // from[k] >= k (breakage's in-place list updates) and the arrays have room; else a parallel
+  // copy into new arrays. No spare array is kept between calls.
   void gather(const std::vector<std::uint32_t>& from);
   // An empty store with the same slots.
   ContactStateStore same_layout() const;
@@ -116,12 +117,11 @@ class ContactStateStore {
   struct Column {
     std::string name;
     SwapRule swap = SwapRule::keep;
-    std::vector<T> data, spare;
+    std::vector<T> data;
   };
   std::vector<Column<Vec3>> vec3_;
   std::vector<Column<float>> f32_;
   std::vector<Column<double>> f64_;
-  std::vector<std::uint8_t> spare_active_;
   Slots slots_;
   friend class ContactScratch;
   void refresh();

@@ -2,8 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-
 #include "comminute/core/error.hpp"
 #include "comminute/engine/simulation.hpp"
 
@@ -30,13 +28,6 @@ OutletModule::OutletModule(std::vector<OutletSpec> outlets)
     : outlets_(std::move(outlets)), totals_(totals_columns(outlets_)) {}
 
 namespace {
-// Per-particle fields the breakage module may have registered (the engine does not need them).
-const std::vector<double>* optional_field(const ParticleStore& p, const char* name) {
-  return p.has_field(name) ? &p.field(p.field_index(name)) : nullptr;
-}
-}  // namespace
-
-namespace {
 // The fields "composition.0", "composition.1", ... that exist, in order.
 std::vector<std::size_t> composition_fields_of(const ParticleStore& p) {
   std::vector<std::size_t> f;
@@ -52,23 +43,13 @@ void OutletModule::setup(Simulation& sim) {
 
 void OutletModule::end_of_step(Simulation& sim) {
   auto& p = sim.particles;
-  const std::vector<double>* target = optional_field(p, "breakage.target_radius");
-  const std::vector<double>* generation = optional_field(p, "breakage.generation");
+  const ParticleRecorder record(p);
   std::size_t marked = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.flags[i] & pflag::remove) continue;
     for (std::size_t k = 0; k < outlets_.size(); ++k) {
       if (!outlets_[k].captures(p.x[i])) continue;
-      RemovedParticle r;
-      r.time = sim.time;
-      r.step = sim.step_count;
-      r.id = p.id[i];
-      r.mass = p.physical_mass(i);
-      r.diameter = 2 * std::max(p.radius[i], target ? (*target)[i] : 0.0);
-      r.outlet = static_cast<std::uint32_t>(k);
-      r.generation = generation ? static_cast<std::uint32_t>((*generation)[i]) : 0;
-      r.material = p.material[i];
-      log_.push_back(r);
+      log_.push_back(record(i, sim.time, sim.step_count, static_cast<std::uint32_t>(k)));
       for (std::size_t f : composition_) compositions_.push_back(p.field(f)[i]);
       // the energy that leaves with it: kinetic, and potential relative to the origin
       sim.ledger.removed += 0.5 * p.mass[i] * norm2(p.v[i]) + 0.5 * p.inertia[i] * norm2(p.w[i]) -
@@ -92,8 +73,8 @@ double OutletModule::removed_mass() const {
 void OutletModule::sample(const Simulation& sim) {
   std::vector<double> count(outlets_.size(), 0.0), mass(outlets_.size(), 0.0);
   for (const auto& r : log_) {
-    count[r.outlet] += 1;
-    mass[r.outlet] += r.mass;
+    count[r.site] += 1;
+    mass[r.site] += r.mass;
   }
   std::vector<double> row;
   for (std::size_t k = 0; k < outlets_.size(); ++k) row.insert(row.end(), {count[k], mass[k]});
@@ -108,10 +89,10 @@ std::vector<Table> OutletModule::tables(const Simulation& sim) const {
     cols.push_back({"composition_" + std::to_string(k), "-"});
   Table removed("outlet_log", cols);
   for (std::size_t n = 0; n < log_.size(); ++n) {
-    const RemovedParticle& r = log_[n];
+    const ParticleRecord& r = log_[n];
     std::vector<Cell> row{r.time,
                           r.step,
-                          outlets_.at(r.outlet).name,
+                          outlets_.at(r.site).name,
                           r.id,
                           sim.materials.material(r.material).name,
                           r.mass,
@@ -131,15 +112,15 @@ void OutletModule::save(Archive& a) const {
 }
 
 void OutletModule::load(const Archive& a) {
-  log_ = a.get<RemovedParticle>("outlets/log");
+  log_ = a.get<ParticleRecord>("outlets/log");
   compositions_ = a.get<double>("outlets/compositions");
   totals_.load(a, "outlets/samples");
   for (const auto& r : log_)
-    if (r.outlet >= outlets_.size() || !(r.mass > 0) || !(r.diameter > 0))
+    if (r.site >= outlets_.size() || !(r.mass > 0) || !(r.diameter > 0) || r.direction != 0)
       throw Error(
           fmt::format("checkpoint entry 'outlets/log' holds a row of outlet {} (the case "
-                      "has {}) or a mass/diameter that is not positive",
-                      r.outlet, outlets_.size()));
+                      "has {}), a mass/diameter that is not positive or a direction (a crossing)",
+                      r.site, outlets_.size()));
 }
 
 void OutletModule::restored(Simulation& sim) {

@@ -4,17 +4,18 @@
 // particle whose centre lies inside an outlet's region (or beyond its plane, on the side the
 // plane's normal points to) is removed through the particle store's one removal path
 // (pflag::remove, ParticleStore::compact(), Simulation::particles_changed()), and one row is
-// appended to the log: time, step, outlet, id, material, mass, diameter, generation (and the
-// composition when the run has per-particle fields "composition.<k>"). Its kinetic
-// and gravitational potential energy are booked as removed energy (EnergyLedger::removed), so
-// the run's energy balance stays closed.
-// Tables (docs/outputs.md): outlet_log.csv (one row per removed particle, every row once) and
-// outlets.csv (cumulative count and mass per outlet at each sample).
+// appended to the log (a ParticleRecord, `site` = the outlet): time, step, outlet, id, material,
+// mass, diameter, generation (and the composition when the run has per-particle fields
+// "composition.<k>"). Its kinetic and gravitational potential energy are booked as removed energy
+// (EnergyLedger::removed), so the run's energy balance stays closed. Tables (docs/outputs.md):
+// outlet_log.csv (one row per removed particle, every row once) and outlets.csv (cumulative count
+// and mass per outlet at each sample).
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "comminute/engine/module.hpp"
+#include "comminute/engine/particle_record.hpp"
 #include "comminute/engine/sample_rows.hpp"
 #include "comminute/engine/series_source.hpp"
 #include "comminute/geometry/region.hpp"
@@ -27,20 +28,6 @@ struct OutletSpec {
   Region region;            // centre inside (Region::contains with radius 0)
   Vec3 point, normal;       // half space: removes where (x − point)·normal > 0; normal unit
   bool captures(const Vec3& x) const;
-};
-
-// One removed particle; trivially copyable (checkpointed as an array).
-struct RemovedParticle {
-  double time = 0;               // s
-  std::uint64_t step = 0;        // step in which it was removed
-  std::uint64_t id = 0;          // particle id
-  double mass = 0;               // kg
-  double diameter = 0;           // m (the final size of a growing fragment)
-  std::uint32_t outlet = 0;      // index in the outlets
-  std::uint32_t generation = 0;  // breakage generation (0: initial particle, or no breakage)
-  std::uint16_t material = 0;
-  std::uint16_t pad0 = 0;
-  std::uint32_t pad1 = 0;
 };
 
 class OutletModule final : public Module, public SeriesSource {
@@ -59,8 +46,8 @@ class OutletModule final : public Module, public SeriesSource {
   std::vector<Table> tables(const Simulation& sim) const override;
 
   const std::vector<OutletSpec>& outlets() const { return outlets_; }
-  // Every removed particle, in the order of removal.
-  const std::vector<RemovedParticle>& log() const { return log_; }
+  // Every removed particle, in the order of removal (`site`: the outlet; `direction` 0).
+  const std::vector<ParticleRecord>& log() const { return log_; }
   // Composition of the removed particles when the run has per-particle fields "composition.<k>"
   // (mineral phases): composition_fields() values per row of log(), in the order of the fields.
   const std::vector<double>& compositions() const { return compositions_; }
@@ -69,7 +56,7 @@ class OutletModule final : public Module, public SeriesSource {
 
  private:
   std::vector<OutletSpec> outlets_;
-  std::vector<RemovedParticle> log_;
+  std::vector<ParticleRecord> log_;
   std::vector<std::size_t> composition_;  // field indices of composition.0, composition.1, ...
   std::vector<double> compositions_;      // per removed particle, one value per composition field
   SampleRows totals_;                     // per sample: time, then count and mass per outlet

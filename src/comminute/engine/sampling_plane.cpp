@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
 
 #include "comminute/core/error.hpp"
@@ -49,11 +48,7 @@ void SamplingPlaneModule::setup(Simulation& sim) {
 
 void SamplingPlaneModule::end_of_step(Simulation& sim) {
   const auto& p = sim.particles;
-  const std::vector<double>* target = p.has_field("breakage.target_radius")
-                                          ? &p.field(p.field_index("breakage.target_radius"))
-                                          : nullptr;
-  const std::vector<double>* generation =
-      p.has_field("breakage.generation") ? &p.field(p.field_index("breakage.generation")) : nullptr;
+  const ParticleRecorder record(p);
   for (std::size_t k = 0; k < planes_.size(); ++k) {
     std::vector<double>& side = sim.particles.field(fields_[k]);
     PlaneCrossings& c = counts_[k];
@@ -73,17 +68,8 @@ void SamplingPlaneModule::end_of_step(Simulation& sim) {
         c.mass_negative += mass;
       }
       if (!plane.log) continue;
-      LoggedCrossing r;
-      r.time = sim.time;
-      r.step = sim.step_count;
-      r.id = p.id[i];
-      r.mass = mass;
-      r.diameter = 2 * std::max(p.radius[i], target ? (*target)[i] : 0.0);
-      r.plane = static_cast<std::uint32_t>(k);
-      r.direction = now == 1.0 ? 1 : -1;
-      r.generation = generation ? static_cast<std::uint32_t>((*generation)[i]) : 0;
-      r.material = p.material[i];
-      log_.push_back(r);
+      log_.push_back(
+          record(i, sim.time, sim.step_count, static_cast<std::uint32_t>(k), now == 1.0 ? 1 : -1));
     }
   }
 }
@@ -110,8 +96,8 @@ std::vector<Table> SamplingPlaneModule::tables(const Simulation& sim) const {
                            {"mass", "kg"},
                            {"diameter", "m"},
                            {"generation", "-"}});
-  for (const LoggedCrossing& r : log_)
-    t.add_row({r.time, r.step, planes_.at(r.plane).name, static_cast<std::int64_t>(r.direction),
+  for (const ParticleRecord& r : log_)
+    t.add_row({r.time, r.step, planes_.at(r.site).name, static_cast<std::int64_t>(r.direction),
                r.id, sim.materials.material(r.material).name, r.mass, r.diameter, r.generation});
   out.push_back(std::move(t));
   return out;
@@ -126,14 +112,15 @@ void SamplingPlaneModule::save(Archive& a) const {
 void SamplingPlaneModule::load(const Archive& a) {
   counts_ = a.get<PlaneCrossings>("sampling_planes/counts");
   samples_.load(a, "sampling_planes/samples");
-  log_.clear();  // (checkpoints from before bounded planes have no log)
-  if (a.has("sampling_planes/log")) log_ = a.get<LoggedCrossing>("sampling_planes/log");
+  log_ = a.get<ParticleRecord>("sampling_planes/log");
   for (const auto& r : log_)
-    if (r.plane >= planes_.size() || !planes_[r.plane].log || !(r.mass > 0))
+    if (r.site >= planes_.size() || !planes_[r.site].log || !(r.mass > 0) ||
+        (r.direction != 1 && r.direction != -1))
       throw Error(fmt::format(
           "checkpoint entry 'sampling_planes/log' holds a crossing of plane {} (the case has {}, "
-          "logging: see [[sampling_planes]] log) or a mass that is not positive",
-          r.plane, planes_.size()));
+          "logging: see [[sampling_planes]] log), a mass that is not positive or a direction "
+          "other than +1 or -1",
+          r.site, planes_.size()));
   if (counts_.size() != planes_.size())
     throw Error(
         fmt::format("checkpoint entry 'sampling_planes/counts' holds {} planes, the case {}",

@@ -13,13 +13,14 @@
 // of the step taken back along its velocity to the plane, x - v d / (v . n) (d the signed
 // distance; exact for a straight path within the step), or its projection when v . n = 0.
 // Tables (docs/outputs.md): sampling_planes.csv, cumulative crossings and mass per direction;
-// sampling_log.csv, one row per counted crossing of a plane with `log` (time, plane, direction,
-// id, material, mass, diameter, generation).
+// sampling_log.csv, one row per counted crossing of a plane with `log` (a ParticleRecord: time,
+// plane, direction, id, material, mass, diameter, generation).
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "comminute/engine/module.hpp"
+#include "comminute/engine/particle_record.hpp"
 #include "comminute/engine/sample_rows.hpp"
 #include "comminute/engine/series_source.hpp"
 #include "comminute/particles/particle_store.hpp"
@@ -37,20 +38,6 @@ struct SamplingPlaneSpec {
   bool log = false;               // log each counted crossing
   // True when a centre at x (end of the step) with velocity v crossed within the bound.
   bool within(const Vec3& x, const Vec3& v) const;
-};
-
-// One counted crossing of a logged plane; trivially copyable (checkpointed as an array).
-struct LoggedCrossing {
-  double time = 0;               // s
-  std::uint64_t step = 0;        // the step in which it crossed
-  std::uint64_t id = 0;          // particle id
-  double mass = 0;               // kg
-  double diameter = 0;           // m (the final size of a growing fragment)
-  std::uint32_t plane = 0;       // index in the planes
-  std::int32_t direction = 0;    // +1 along the normal, -1 against it
-  std::uint32_t generation = 0;  // breakage generation
-  std::uint16_t material = 0;
-  std::uint16_t pad = 0;
 };
 
 struct PlaneCrossings {
@@ -75,13 +62,14 @@ class SamplingPlaneModule final : public Module, public SeriesSource {
   // checkpoint is loaded, which holds them).
   void register_fields(ParticleStore& p);
   const std::vector<PlaneCrossings>& crossings() const { return counts_; }
-  const std::vector<LoggedCrossing>& log() const { return log_; }
+  // The counted crossings of the planes with `log`, in order (`site`: the plane; `direction`).
+  const std::vector<ParticleRecord>& log() const { return log_; }
 
  private:
   std::vector<SamplingPlaneSpec> planes_;
   std::vector<std::size_t> fields_;
   std::vector<PlaneCrossings> counts_;
-  std::vector<LoggedCrossing> log_;
+  std::vector<ParticleRecord> log_;
   SampleRows samples_;  // per sample: time, then 4 numbers per plane
 };
 

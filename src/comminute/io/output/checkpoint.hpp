@@ -19,8 +19,9 @@
 
 namespace comminute::io {
 
-inline constexpr int checkpoint_format_version = 4;  // 4: bond energies in the ledger, periodic
-// image labels of pairs; 3: case fingerprint; 2: state by slot
+inline constexpr int checkpoint_format_version = 5;  // 5: outlet and sampling-plane logs as one
+// record (engine/particle_record.hpp); 4: bond energies in the ledger, periodic image labels of
+// pairs; 3: case fingerprint; 2: state by slot
 
 struct CheckpointInfo {
   int format_version = checkpoint_format_version;

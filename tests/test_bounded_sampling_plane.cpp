@@ -91,7 +91,8 @@ TEST(BoundedSamplingPlane, CountsOnlyTheCrossingsThroughItsDiscOrRectangle) {
   EXPECT_EQ(c_rect.positive, in_rect.positive);
   EXPECT_EQ(c_rect.negative, in_rect.negative);
   // the grid: 21 forwards (16 (i^2 + j^2) < 100 mm^2) and 18 backwards inside the disc, 3 x 5 and
-  // 3 x 4 inside the rectangle (so the test cannot pass with every or no crossing counted)
+  // 3 x 4 inside the rectangle, and the oblique sphere makes 22 forwards in the disc (so the test
+  // cannot pass with every or no crossing counted)
   EXPECT_EQ(in_disc.positive, 22u);
   EXPECT_EQ(in_disc.negative, 18u);
   EXPECT_EQ(in_rect.positive, 15u);

@@ -24,25 +24,38 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
   const std::size_t n = p.size();
   const double eps = eps_;
   const bool pushing = pushing_;
-  std::vector<double> limit(n);
+  std::vector<double>& limit = limit_;
   // one byte per slot, bit 0: growing at the start of the step, bit 1: its radius changed; the
   // pair scans read these (n bytes stay in cache) instead of the flags and both radius arrays
   constexpr std::uint8_t was_growing = 1, grew = 2;
-  std::vector<std::uint8_t> state(n);
+  std::vector<std::uint8_t>& state = state_;
+  std::vector<double>& r_before = r_before_;
+  limit.resize(n);
+  state.resize(n);
+  r_before.resize(n);
   const auto& target = p.field(f_target);
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     const bool g = (p.flags[i] & pflag::growing) != 0;
     state[i] = g ? was_growing : 0;
     limit[i] = g ? target[i] : 0.0;
+    r_before[i] = p.radius[i];
   }
   const auto& nl = sim.pairs();
+  // The pairs with a growing particle, per thread in its range of the list (ascending): the
+  // energy pass below visits only these (a particle that grew was growing), split between the
+  // threads exactly as a pass over the whole list is, so its sums are the same.
+  const int nt = nl.size() >= kScatterMin ? max_threads() : 1;
+  auto& hits = growing_pairs_;
+  hits.resize(static_cast<std::size_t>(nt));
+  for (auto& h : hits) h.clear();
   parallel_scatter(
       nl.size(), limit, std::numeric_limits<double>::infinity(),
       [&](std::size_t k, std::vector<double>& lim) {
         const std::uint32_t i = nl.first[k], j = nl.second[k];
         const bool gi = state[i] != 0, gj = state[j] != 0;
         if (!gi && !gj) return;
+        hits[static_cast<std::size_t>(thread_id())].push_back(static_cast<std::uint32_t>(k));
         if (pushing) {  // the overlap may deepen by eps min(r_i, r_j), shared when both grow
           const double gap = norm(p.x[i] - p.x[j]) - p.radius[i] - p.radius[j];
           const double room = std::max(0.0, gap) + eps * std::min(p.radius[i], p.radius[j]);
@@ -64,7 +77,6 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
   // a ghost's neighbours bound its owner's growth (periodic boundaries)
   for (std::size_t s = p.owned(); s < n; ++s)
     limit[p.owner_of(s)] = std::min(limit[p.owner_of(s)], limit[s]);
-  const std::vector<double> r_before = p.radius;
   // Growth at fixed positions raises the overlaps of the growing spheres: that elastic energy
   // comes from nowhere, so it is booked (as negative removed energy) to keep the balance closed.
   struct GrowthTally {
@@ -124,26 +136,30 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
     p.radius[s] = p.radius[p.owner_of(s)];
     if (p.radius[s] != r_before[s]) state[s] |= grew;
   }
-  std::vector<double> pair_energy(1, 0.0);  // J, summed per thread
-  parallel_scatter(
-      nl.size(), pair_energy, 0.0,
-      [&](std::size_t k, std::vector<double>& sum) {
-        const std::uint32_t i = nl.first[k], j = nl.second[k];
-        if (((state[i] | state[j]) & grew) == 0) return;  // nothing grew
-        // apart by a clear margin (most pairs): no overlap after, no root taken; the margin
-        // (relative 1e-9, far above rounding) keeps the exact test below for the touching ones
-        const double d2 = norm2(p.x[i] - p.x[j]), reach = p.radius[i] + p.radius[j];
-        if (d2 > reach * reach * (1 + 1e-9)) return;
-        const double dist = std::sqrt(d2);
-        const double before = r_before[i] + r_before[j] - dist,
-                     after = p.radius[i] + p.radius[j] - dist;
-        if (after <= 0) return;
-        sum[0] += overlap_energy(sim, after, p.radius[i], p.mass[i], p.material[i], p.radius[j],
-                                 p.mass[j], p.material[j]) -
-                  overlap_energy(sim, before, r_before[i], p.mass[i], p.material[i], r_before[j],
-                                 p.mass[j], p.material[j]);
-      },
-      [](double a, double b) { return a + b; });
+  std::vector<double> pair_energy(static_cast<std::size_t>(nt), 0.0);  // J, per thread
+#pragma omp parallel num_threads(nt)
+  {
+    const auto t = static_cast<std::size_t>(thread_id());
+    double sum = 0;  // in pair order, as thread t's share of a pass over the whole list
+    for (const std::uint32_t k : hits[t]) {
+      const std::uint32_t i = nl.first[k], j = nl.second[k];
+      if (((state[i] | state[j]) & grew) == 0) continue;  // nothing grew
+      // apart by a clear margin (most pairs): no overlap after, no root taken; the margin
+      // (relative 1e-9, far above rounding) keeps the exact test below for the touching ones
+      const double d2 = norm2(p.x[i] - p.x[j]), reach = p.radius[i] + p.radius[j];
+      if (d2 > reach * reach * (1 + 1e-9)) continue;
+      const double dist = std::sqrt(d2);
+      const double before = r_before[i] + r_before[j] - dist,
+                   after = p.radius[i] + p.radius[j] - dist;
+      if (after <= 0) continue;
+      sum += overlap_energy(sim, after, p.radius[i], p.mass[i], p.material[i], p.radius[j],
+                            p.mass[j], p.material[j]) -
+             overlap_energy(sim, before, r_before[i], p.mass[i], p.material[i], r_before[j],
+                            p.mass[j], p.material[j]);
+    }
+    pair_energy[t] = sum;
+  }
+  for (int t = 1; t < nt; ++t) pair_energy[0] += pair_energy[static_cast<std::size_t>(t)];
   ledger.create(sim, pair_energy[0] + tally[0].wall_energy);
   if (tally[0].rebuild) sim.particles_changed();
 }

@@ -9,6 +9,8 @@
 // docs/breakage.md); pushing growth instead lets every overlap deepen by the ratio per step, so
 // the fragment grows against the load and carries it at its full size.
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 namespace comminute {
 class Simulation;
@@ -39,6 +41,11 @@ class FragmentGrowth {
   double step_;   // largest radius increment per step, fraction of the final radius
   bool pushing_;  // the overlap cap applies to the deepening per step, not to the overlap
   std::size_t pending_ = 0;
+  // scratch of grow(), one entry per slot, kept between steps (no allocation and first touch of
+  // fresh pages each step); filled on all threads
+  std::vector<double> limit_, r_before_;
+  std::vector<std::uint8_t> state_;
+  std::vector<std::vector<std::uint32_t>> growing_pairs_;  // per thread: pairs with a growing one
 };
 
 }  // namespace comminute::breakage

@@ -31,19 +31,23 @@ inline void flush_denormals_to_zero() {
 // body(k, acc) updates acc, which is `out` itself for the first thread and a copy filled with
 // `identity` for each other one; the copies are then folded into `out` with combine(a, b) in
 // thread order, so the same thread count always gives the same result. Small loops run serially.
+// Each thread allocates and fills its own copy inside the parallel region: the fill (and the
+// first touch of its pages) is not a serial pass of the calling thread.
+// Thread t of nt takes [n t / nt, n (t + 1) / nt); nt = 1 below kScatterMin iterations.
+inline constexpr std::size_t kScatterMin = 8192;
 template <class T, class Body, class Combine>
 void parallel_scatter(std::size_t n, std::vector<T>& out, const T& identity, Body&& body,
                       Combine&& combine) {
-  const int nt = n >= 8192 ? max_threads() : 1;
+  const int nt = n >= kScatterMin ? max_threads() : 1;
   if (nt == 1) {
     for (std::size_t k = 0; k < n; ++k) body(k, out);
     return;
   }
-  std::vector<std::vector<T>> copies(static_cast<std::size_t>(nt - 1),
-                                     std::vector<T>(out.size(), identity));
+  std::vector<std::vector<T>> copies(static_cast<std::size_t>(nt - 1));
 #pragma omp parallel num_threads(nt)
   {
     const int t = thread_id();
+    if (t > 0) copies[static_cast<std::size_t>(t - 1)].assign(out.size(), identity);
     std::vector<T>& acc = t == 0 ? out : copies[static_cast<std::size_t>(t - 1)];
     const std::size_t k1 = n * static_cast<std::size_t>(t + 1) / static_cast<std::size_t>(nt);
     for (std::size_t k = n * static_cast<std::size_t>(t) / static_cast<std::size_t>(nt); k < k1;

@@ -24,8 +24,12 @@ bool PairTracker::due(const ParticleStore& p, const SimulationOptions& options) 
     double travel = 0;
     for (double t : wall_travel_) travel = std::max(travel, t);
     // |x - x_build| for every particle; plus the change of radius for the tracked ones
+    // (a max: exact, so the same on any number of threads)
     double reach = std::sqrt(max_disp2_);
-    for (std::uint32_t s : reach_tracked_) reach = std::max(reach, reach_change(p, s));
+    const auto n_tracked = static_cast<std::ptrdiff_t>(reach_tracked_.size());
+#pragma omp parallel for schedule(static) reduction(max : reach) if (n_tracked >= 16384)
+    for (std::ptrdiff_t q = 0; q < n_tracked; ++q)
+      reach = std::max(reach, reach_change(p, reach_tracked_[static_cast<std::size_t>(q)]));
     const double limit = 0.5 * options.skin;
     if (reach > limit || travel > limit) stale_ = true;
   }
@@ -54,6 +58,8 @@ void PairTracker::rebuild(ParticleStore& p, const Walls& walls, SimulationOption
   const auto& carried = nlist_.carried();
   // the last build's positions are spent: released before the carry, the peak memory of a rebuild
   std::vector<Vec3>().swap(x_at_build_);
+  std::vector<Vec3>().swap(x_spare_);
+  std::vector<double>().swap(r_spare_);
   pair_state.carry(carried.from, carried.to, carried.reversed, nlist_.size());
   x_at_build_ = p.x;
   r_at_build_ = p.radius;
@@ -141,13 +147,21 @@ bool PairTracker::replace(const ParticleStore& p, const Walls& walls, double ski
   bool known = !to_new.empty() && p.size() - n_kept == fragments.size();
   for (std::size_t s = n_kept; known && s < p.size(); ++s) known = final_radius.count(p.id[s]) > 0;
   if (!known) return false;  // something else was inserted or moved: rebuild
-  std::vector<Vec3> x_build(p.size());
-  std::vector<double> r_build(p.size());
-  for (std::size_t old = 0; old < to_new.size(); ++old)
+  // the kept reach spheres move to their new slots (distinct targets: on all threads) in spare
+  // arrays kept between updates, swapped in below
+  std::vector<Vec3>& x_build = x_spare_;
+  std::vector<double>& r_build = r_spare_;
+  x_build.resize(p.size());
+  r_build.resize(p.size());
+  const auto n_old = static_cast<std::ptrdiff_t>(to_new.size());
+#pragma omp parallel for schedule(static) if (n_old >= 16384)
+  for (std::ptrdiff_t o = 0; o < n_old; ++o) {
+    const auto old = static_cast<std::size_t>(o);
     if (to_new[old] != NeighborList::none) {
       x_build[to_new[old]] = x_at_build_[old];
       r_build[to_new[old]] = r_at_build_[old];
     }
+  }
   std::vector<std::uint32_t> tracked;
   for (std::uint32_t s : reach_tracked_)
     if (to_new[s] != NeighborList::none) tracked.push_back(to_new[s]);

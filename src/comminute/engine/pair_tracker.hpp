@@ -108,6 +108,8 @@ class PairTracker {
   std::vector<Vec3> x_at_build_;
   std::vector<double> r_at_build_;
   std::vector<std::uint32_t> reach_tracked_;  // slots whose radius or reach changed since the build
+  std::vector<Vec3> x_spare_;                 // replace() builds the next reach spheres in these
+  std::vector<double> r_spare_;
   bool stale_ = true;
   std::uint64_t rebuilds_ = 0;
   double max_disp2_ = 0;

@@ -8,6 +8,11 @@
 
 namespace comminute {
 
+namespace {
+// Loops shorter than this run on one thread (a thread team costs more).
+constexpr std::size_t kThreadedLoop = 16384;
+}  // namespace
+
 void NeighborList::make_rows(std::size_t n) {
   row_.assign(n + 1, 0);
   for (auto f : first) ++row_[f + 1];
@@ -308,29 +313,47 @@ void NeighborList::update_in_place(const ParticleStore& p, const std::vector<std
   first.swap(spare_first_);
   second.swap(spare_second_);
   index_.remap(to_new);
-  const std::size_t n_kept = static_cast<std::size_t>(
-      std::count_if(to_new.begin(), to_new.end(), [](std::uint32_t s) { return s != none; }));
+  // kept slots come first, in order: the new slot of the last kept one tells how many there are
+  std::size_t n_kept = 0;
+  for (std::size_t old = to_new.size(); old-- > 0;)
+    if (to_new[old] != none) {
+      n_kept = std::size_t{to_new[old]} + 1;
+      break;
+    }
   // rows of the appended particles (the highest slots) follow the kept rows: grouping by owner
-  // holds; each row sorted, so the list does not depend on the index's layout
-  std::vector<std::uint32_t> row;
-  for (std::size_t s = n_kept; s < n; ++s) {
-    const auto fs = static_cast<std::uint32_t>(s);
-    row.clear();
+  // holds; each row sorted, so the list does not depend on the index's layout. Appended particle
+  // s pairs with every kept particle and every appended one before it (j < s): all are indexed
+  // first, then the rows are searched on all threads and concatenated in slot order, the same
+  // list as inserting them one by one.
+  for (std::size_t s = n_kept; s < n; ++s)
+    index_.insert(static_cast<std::uint32_t>(s), x_build[s], r_build[s]);
+  const std::size_t n_new = n - std::min(n, n_kept);
+  std::vector<std::vector<std::uint32_t>> rows(n_new);
+#pragma omp parallel for schedule(dynamic, 16) if (n_new >= 64)
+  for (std::size_t q = 0; q < n_new; ++q) {
+    const std::size_t s = n_kept + q;
+    auto& row = rows[q];
     index_.visit_near(x_build[s], r_build[s], skin_, [&](std::uint32_t j) {
+      if (j >= s) return;
       const double cut = r_build[s] + r_build[j] + skin_;
       if (norm2(x_build[s] - x_build[j]) < cut * cut) row.push_back(j);
     });
     std::sort(row.begin(), row.end());
-    for (std::uint32_t j : row) {
+  }
+  for (std::size_t q = 0; q < n_new; ++q) {
+    const auto fs = static_cast<std::uint32_t>(n_kept + q);
+    for (std::uint32_t j : rows[q]) {
       first.push_back(fs);
       second.push_back(j);
       kept_from_.push_back(none);
     }
-    index_.insert(fs, x_build[s], r_build[s]);
   }
   std::vector<std::uint8_t> large(n, 0);
-  for (std::size_t old = 0; old < to_new.size(); ++old)
-    if (to_new[old] != none) large[to_new[old]] = large_[old];
+  const auto n_old = static_cast<std::ptrdiff_t>(to_new.size());
+#pragma omp parallel for schedule(static) if (to_new.size() >= kThreadedLoop)
+  for (std::ptrdiff_t old = 0; old < n_old; ++old)
+    if (to_new[static_cast<std::size_t>(old)] != none)
+      large[to_new[static_cast<std::size_t>(old)]] = large_[static_cast<std::size_t>(old)];
   large_ = std::move(large);
   ids_ = p.id;
   make_rows(n);

@@ -28,8 +28,12 @@ void ReachIndex::build(const std::vector<Vec3>& x, const std::vector<double>& r,
 }
 
 void ReachIndex::remap(const std::vector<std::uint32_t>& to_new) {
-  for (auto& s : slot_)
+  const auto n = static_cast<std::ptrdiff_t>(slot_.size());
+#pragma omp parallel for schedule(static) if (n >= 16384)
+  for (std::ptrdiff_t e = 0; e < n; ++e) {
+    auto& s = slot_[static_cast<std::size_t>(e)];
     if (s != none) s = s < to_new.size() ? to_new[s] : none;
+  }
 }
 
 void ReachIndex::insert(std::uint32_t slot, const Vec3& x, double r) {

@@ -1,0 +1,107 @@
+// In-place update of the neighbour list after breakage (compaction, then fragments appended): the
+// appended particles' rows are searched on all threads, yet the list must be exactly the one of
+// a serial insertion one by one: the kept pairs remapped in their old order, then for each
+// appended slot s in turn the partners j < s within r_s + r_j + skin, ascending. Checked pair by
+// pair (order included, which the contact-state carry and the force sums depend on) on one and
+// on two threads, on a polydisperse bed (large particles in their own grid).
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+#include "comminute/core/rng.hpp"
+#include "comminute/neighbor/neighbor_list.hpp"
+
+using namespace comminute;
+
+namespace {
+
+struct Lists {
+  std::vector<std::uint32_t> first, second, kept_from;
+};
+
+ParticleStore bed(Rng& rng, int n, double box) {
+  ParticleStore p;
+  for (int k = 0; k < n; ++k) {
+    ParticleInit init;
+    init.radius = k % 40 == 0 ? 0.004 : 0.0005 * rng.uniform(0.5, 1.0);
+    init.x = {rng.uniform(0, box), rng.uniform(0, box), rng.uniform(0, box)};
+    init.density = 1000;
+    p.add(init);
+  }
+  return p;
+}
+
+// Two rounds of removal and insertion with `threads` threads; the lists after each round.
+std::vector<Lists> updated(int threads, std::vector<Lists>* expected) {
+  const double skin = 0.0002, box = 0.04;
+  Rng rng(17);
+  ParticleStore p = bed(rng, 4000, box);
+  NeighborList nl;
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  nl.build(p, skin);
+  std::vector<Lists> out;
+  for (int round = 0; round < 2; ++round) {
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (rng.uniform() < 0.2) p.flags[i] |= pflag::remove;
+    p.compact();
+    const std::vector<std::uint32_t> to_new = nl.slots_after_removal(p);
+    EXPECT_FALSE(to_new.empty());
+    const std::size_t n_kept = p.size();
+    for (int k = 0; k < 400; ++k) {  // fragments, some larger than any kept particle
+      ParticleInit init;
+      init.radius = k % 100 == 0 ? 0.005 : 0.0004 * rng.uniform(0.3, 1.0);
+      init.x = {rng.uniform(0, box), rng.uniform(0, box), rng.uniform(0, box)};
+      init.density = 1000;
+      p.add(init);
+    }
+    if (expected) {  // the serial definition, from the list before the update
+      Lists e;
+      for (std::size_t k = 0; k < nl.size(); ++k) {
+        const std::uint32_t a = to_new[nl.first[k]], b = to_new[nl.second[k]];
+        if (a == NeighborList::none || b == NeighborList::none) continue;
+        e.first.push_back(a);
+        e.second.push_back(b);
+        e.kept_from.push_back(static_cast<std::uint32_t>(k));
+      }
+      for (std::size_t s = n_kept; s < p.size(); ++s)
+        for (std::size_t j = 0; j < s; ++j) {
+          const double cut = p.radius[s] + p.radius[j] + skin;
+          if (norm2(p.x[s] - p.x[j]) < cut * cut) {
+            e.first.push_back(static_cast<std::uint32_t>(s));
+            e.second.push_back(static_cast<std::uint32_t>(j));
+            e.kept_from.push_back(NeighborList::none);
+          }
+        }
+      expected->push_back(std::move(e));
+    }
+    nl.update_in_place(p, to_new, p.x, p.radius);
+    out.push_back({nl.first, nl.second, nl.kept_from()});
+  }
+  omp_set_num_threads(saved);
+  return out;
+}
+
+}  // namespace
+
+TEST(InPlaceRows, EqualTheSerialInsertionOnOneAndTwoThreads) {
+  std::vector<Lists> expected;
+  const auto one = updated(1, &expected);
+  const auto two = updated(2, nullptr);
+  ASSERT_EQ(expected.size(), 2u);
+  for (std::size_t r = 0; r < expected.size(); ++r) {
+    // the appended rows hold many pairs (else the threaded search would go untested)
+    EXPECT_GT(
+        std::count(expected[r].kept_from.begin(), expected[r].kept_from.end(), NeighborList::none),
+        100);
+    EXPECT_EQ(one[r].first, expected[r].first) << "round " << r;
+    EXPECT_EQ(one[r].second, expected[r].second) << "round " << r;
+    EXPECT_EQ(one[r].kept_from, expected[r].kept_from) << "round " << r;
+    EXPECT_EQ(two[r].first, expected[r].first) << "round " << r;
+    EXPECT_EQ(two[r].second, expected[r].second) << "round " << r;
+    EXPECT_EQ(two[r].kept_from, expected[r].kept_from) << "round " << r;
+  }
+}

@@ -62,3 +62,27 @@ TEST(PairSplit, LopsidedListPutsTheSplitWhereTheContactsAre) {
   EXPECT_EQ(at[1], 9286U);
   EXPECT_EQ(split_by_definition(active, 2), at);
 }
+
+TEST(PairSplit, BlockCostsSummedInSharesGiveTheSameSplit) {
+  // the pair force loop's threads sum the block costs each over their share of the blocks, then
+  // one places the split: for any division of the blocks it must be the definition's split
+  Rng rng(11, 0);
+  for (std::size_t n : {1UL, 4096UL, 4097UL, 40000UL, 444000UL})
+    for (double touching : {0.0, 0.55, 1.0}) {
+      std::vector<std::uint8_t> active(n);
+      for (auto& a : active) a = rng.uniform() < touching ? 1 : 0;
+      const std::size_t blocks = pair_split_blocks(n);
+      for (int nt : {2, 3, 16}) {
+        std::vector<std::uint64_t> cost(blocks, 99);  // stale content must not matter
+        for (int t = 0; t < nt; ++t)  // shares as the loop makes them, in reverse order
+        {
+          const auto u = static_cast<std::size_t>(nt - 1 - t);
+          pair_block_costs(active.data(), n, blocks * u / nt, blocks * (u + 1) / nt, cost.data());
+        }
+        std::vector<std::size_t> at{7};
+        split_from_block_costs(active.data(), n, nt, cost.data(), at);
+        EXPECT_EQ(at, split_by_definition(active, nt))
+            << "n " << n << " touching " << touching << " threads " << nt;
+      }
+    }
+}

@@ -27,13 +27,14 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
   const std::size_t npairs = pairs.size();
   const int nt = npairs >= 2 * kParallelMin ? max_threads() : 1;
   const auto& rows = pairs.rows();
+  // the threads split the pairs by cost (engine/pair_split.hpp) at the start of their region: the
+  // cost of each block of pairs is summed by the threads together, then one places the split
   auto& split = split_;
-  balanced_pair_split(state.active.data(), npairs, nt, split);
   auto& owner_begin = owner_begin_;
   owner_begin.assign(static_cast<std::size_t>(nt) + 1, 0);
   owner_begin[static_cast<std::size_t>(nt)] = static_cast<std::uint32_t>(n);
-  for (int t = 1; t < nt; ++t)
-    owner_begin[t] = split[t] < npairs ? pairs.first[split[t]] : static_cast<std::uint32_t>(n);
+  const std::size_t blocks = pair_split_blocks(npairs);
+  block_cost_.resize(blocks);
   cross_.resize(static_cast<std::size_t>(nt));
   ended_.resize(static_cast<std::size_t>(nt));
   const CollisionRecord* record = pipeline.collisions();
@@ -50,6 +51,19 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
 #pragma omp parallel num_threads(nt)
   {
     const int t = thread_id();
+    if (nt > 1) {
+      const auto ut = static_cast<std::size_t>(t), unt = static_cast<std::size_t>(nt);
+      pair_block_costs(active, npairs, blocks * ut / unt, blocks * (ut + 1) / unt,
+                       block_cost_.data());
+#pragma omp barrier
+#pragma omp single
+      {
+        split_from_block_costs(active, npairs, nt, block_cost_.data(), split);
+        for (int u = 1; u < nt; ++u)
+          owner_begin[u] =
+              split[u] < npairs ? pairs.first[split[u]] : static_cast<std::uint32_t>(n);
+      }  // (the threads wait here for the split)
+    }
     Vec3* F = p.f.data();
     Vec3* T = p.t.data();
     const Vec3 *X = p.x.data(), *V = p.v.data(), *W = p.w.data();

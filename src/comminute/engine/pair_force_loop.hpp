@@ -51,6 +51,7 @@ class PairForceLoop {
   // reused from step to step: the threads' pair ranges, their first owned particles, their energy
   std::vector<std::size_t> split_;
   std::vector<std::uint32_t> owner_begin_;
+  std::vector<std::uint64_t> block_cost_;  // the cost of each block of pairs (pair_split.hpp)
   std::vector<EnergyTally> tally_;
 };
 

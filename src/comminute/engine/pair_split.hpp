@@ -13,4 +13,15 @@ namespace comminute {
 void balanced_pair_split(const std::uint8_t* active, std::size_t n, int nt,
                          std::vector<std::size_t>& at);
 
+// The same split in two parts, so that the threads that are to share the pairs can sum the costs
+// together (a serial pass over every pair's flag in every step is what limits two threads):
+// 1. pair_split_blocks(n) blocks of pairs; each thread sums its share of them into `cost` with
+//    pair_block_costs (cost must hold pair_split_blocks(n) entries; blocks [b0, b1) are written);
+// 2. one thread then places the split points with split_from_block_costs.
+std::size_t pair_split_blocks(std::size_t n);
+void pair_block_costs(const std::uint8_t* active, std::size_t n, std::size_t b0, std::size_t b1,
+                      std::uint64_t* cost);
+void split_from_block_costs(const std::uint8_t* active, std::size_t n, int nt,
+                            const std::uint64_t* cost, std::vector<std::size_t>& at);
+
 }  // namespace comminute

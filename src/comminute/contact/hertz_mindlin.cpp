@@ -6,6 +6,8 @@
 // the default: incremental force, rescaled on unloading, Thornton, Cummins & Cleary, Powder
 // Technol. 2013 eq. 18; "mindlin": the total form F_t = -8 G* a xi, LAMMPS `mindlin`, whose
 // energy ledger does not close while loaded contacts change their radius); docs/models.md T1.
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "comminute/contact/tangential_friction.hpp"
@@ -13,7 +15,7 @@
 namespace comminute {
 namespace {
 
-class HertzMindlin final : public ContactLawOf<HertzMindlin> {
+class HertzMindlin final : public ContactLaw {
  public:
   explicit HertzMindlin(const CaseTable& t)
       : tangential_damping_(t.boolean("tangential_damping", true)),
@@ -24,31 +26,101 @@ class HertzMindlin final : public ContactLawOf<HertzMindlin> {
     slots_.declare(layout, dynamic_friction_, rescale_);
   }
 
-  // always inlined into the batch loop of ContactLawOf (one call per run of contacts)
-  [[gnu::always_inline]] void compute(const ContactKinematics& k, const PairParameters& p,
-                                      const StateRef& s, ContactForces& out) const override {
-    const double delta = k.overlap;
-    const double a = std::sqrt(k.effective_radius * delta);  // contact radius sqrt(R* delta)
-    const double sn = 2.0 * p.effective_modulus * a;         // S_n = 2 E* a
-    const double kn = 2.0 / 3.0 * sn;                        // F = (4/3) E* sqrt(R*) delta^1.5
-    const double beta = p.damping_beta;
-    // F_n,d = -2 sqrt(5/6) beta sqrt(S_n m*) v_n (Tsuji-type, beta <= 0 here)
-    const double gn = -2.0 * std::sqrt(5.0 / 6.0) * beta * std::sqrt(sn * k.effective_mass);
-    // the same root for S_t = 8 G* a: sqrt(S_t m*) = sqrt(S_n m*) sqrt(4 G* / E*)
-    const double fel = kn * delta;
-    const double fd = gn * k.overlap_rate;
-    out.elastic_normal_force = fel;
-    out.normal_force = fel + fd;
-    out.normal_elastic_energy = 0.4 * fel * delta;  // integral of F dδ = (2/5) k_n δ^2
-    out.stored_energy = out.normal_elastic_energy;
-    out.damping_dissipation = fd * k.overlap_rate * k.dt;
-    const double st = 8.0 * p.effective_shear_modulus * a;  // Mindlin S_t = 8 G* a
-    const double gt = tangential_damping_ ? gn * p.shear_normal_root : 0.0;
-    if (rescale_)
-      out.friction_dissipation +=
-          follow_stiffness(s.vec3(slots_.spring), s.f64(slots_.stiffness), st);
-    coulomb_tangential(k, st, gt, friction_limit(p, out.normal_force), s.vec3(slots_.spring),
-                       slots_.flag(s), out);
+  // One contact: the same steps as a batch of one (compute_batch), so both give the same bits.
+  void compute(const ContactKinematics& k, const PairParameters& p, const StateRef& s,
+               ContactForces& out) const override {
+    const double a = std::sqrt(radius_squared(k));
+    const double root = std::sqrt(stiffness_mass(k, p, a));
+    const ProjectedSpring ps = normal_and_spring(k, p, s, a, root, out);
+    const Tangential co = tangential(p, a, root, out);
+    coulomb_rotated(k, co.kt, co.ct, co.lim, ps.xi * restore_length(ps.before, ps.after),
+                    s.vec3(slots_.spring), slots_.flag(s), out);
+  }
+
+  // The contacts of a batch in stages, each a loop over up to kStage contacts: the square roots of
+  // the contact radius, of the dashpot and of the spring's rotation each in a loop of their own
+  // (independent, so they overlap and vectorise instead of each contact waiting on its own chain
+  // of division and roots), and the arithmetic of a sticking contact's friction in
+  // structure-of-arrays loops; a contact that slides or whose dashpot is capped is redone by
+  // coulomb_rotated(). Every contact goes through the same operations as compute().
+  void compute_batch(const ContactBatch& b) const override {
+    constexpr std::size_t kStage = 64;
+    std::array<double, kStage> arg, a, root, before, after, factor;
+    std::array<Vec3, kStage> xi;
+    std::array<Tangential, kStage> co;
+    // the sticking law in structure of arrays: the rotated spring, v_t, dt, k_t, c_t in; the
+    // trial spring, the squared spring force, the force, its square, the dashpot's work and the
+    // spring's energy out
+    std::array<double, kStage> sx, sy, sz, vx, vy, vz, dt, kt, ct;
+    std::array<double, kStage> tx, ty, tz, spring2, fx, fy, fz, ft2, damping, energy;
+    for (std::size_t c0 = 0; c0 < b.size; c0 += kStage) {
+      const std::size_t n = std::min(kStage, b.size - c0);
+      const ContactKinematics* K = b.kinematics + c0;
+      const PairParameters* const* P = b.parameters + c0;
+      ContactForces* out = b.forces + c0;
+      for (std::size_t c = 0; c < n; ++c) arg[c] = radius_squared(K[c]);
+      for (std::size_t c = 0; c < n; ++c) a[c] = std::sqrt(arg[c]);
+      for (std::size_t c = 0; c < n; ++c) arg[c] = stiffness_mass(K[c], *P[c], a[c]);
+      for (std::size_t c = 0; c < n; ++c) root[c] = std::sqrt(arg[c]);
+      for (std::size_t c = 0; c < n; ++c) {
+        const ProjectedSpring ps = normal_and_spring(
+            K[c], *P[c], StateRef{b.slots, b.index[c0 + c]}, a[c], root[c], out[c]);
+        xi[c] = ps.xi;
+        before[c] = ps.before;
+        after[c] = ps.after;
+        co[c] = tangential(*P[c], a[c], root[c], out[c]);
+        const Vec3& v = K[c].tangential_velocity;
+        vx[c] = v.x;
+        vy[c] = v.y;
+        vz[c] = v.z;
+        dt[c] = K[c].dt;
+        kt[c] = co[c].kt;
+        ct[c] = co[c].ct;
+      }
+      for (std::size_t c = 0; c < n; ++c) factor[c] = restore_length(before[c], after[c]);
+      for (std::size_t c = 0; c < n; ++c) {
+        xi[c] *= factor[c];  // rotated: the length restored
+        sx[c] = xi[c].x;
+        sy[c] = xi[c].y;
+        sz[c] = xi[c].z;
+      }
+      // coulomb_rotated()'s sticking branch, operation for operation
+      for (std::size_t c = 0; c < n; ++c) {
+        const double x = sx[c] + vx[c] * dt[c], y = sy[c] + vy[c] * dt[c],
+                     z = sz[c] + vz[c] * dt[c];  // trial = xi + v_t dt
+        const double xi2 = x * x + y * y + z * z;
+        const double k = kt[c];
+        const double fsx = x * -k, fsy = y * -k, fsz = z * -k;  // fs = -k_t xi
+        const double f1 = fsx - vx[c] * ct[c], f2 = fsy - vy[c] * ct[c], f3 = fsz - vz[c] * ct[c];
+        tx[c] = x;
+        ty[c] = y;
+        tz[c] = z;
+        spring2[c] = k * k * xi2;
+        fx[c] = f1;
+        fy[c] = f2;
+        fz[c] = f3;
+        ft2[c] = f1 * f1 + f2 * f2 + f3 * f3;
+        damping[c] = -((f1 - fsx) * vx[c] + (f2 - fsy) * vy[c] + (f3 - fsz) * vz[c]) * dt[c];
+        energy[c] = 0.5 * k * xi2;
+      }
+      for (std::size_t c = 0; c < n; ++c) {
+        const StateRef s{b.slots, b.index[c0 + c]};
+        float* flag = slots_.flag(s);
+        const FrictionLimit lim = co[c].lim;
+        const bool was_sliding = flag != nullptr && *flag != 0.0f;
+        const bool slides = spring2[c] > lim.stick * lim.stick ||
+                            (was_sliding && spring2[c] > lim.slide * lim.slide);
+        if (slides || ft2[c] > lim.stick * lim.stick) {
+          coulomb_rotated(K[c], kt[c], ct[c], lim, xi[c], s.vec3(slots_.spring), flag, out[c]);
+          continue;
+        }
+        if (flag != nullptr) *flag = 0.0f;
+        out[c].damping_dissipation += damping[c];
+        s.vec3(slots_.spring) = {tx[c], ty[c], tz[c]};
+        out[c].tangential_force = {fx[c], fy[c], fz[c]};
+        out[c].stored_energy += energy[c];
+      }
+    }
   }
 
   double normal_stiffness(const PairParameters& p, double r, double, double delta) const override {
@@ -56,6 +128,56 @@ class HertzMindlin final : public ContactLawOf<HertzMindlin> {
   }
 
  private:
+  // R* delta, whose root is the contact radius a (m^2)
+  static double radius_squared(const ContactKinematics& k) {
+    return k.effective_radius * k.overlap;
+  }
+  // S_n m* = 2 E* a m*, whose root sets the dashpots (N kg/m)
+  static double stiffness_mass(const ContactKinematics& k, const PairParameters& p, double a) {
+    return 2.0 * p.effective_modulus * a * k.effective_mass;
+  }
+  // The normal force and its energies into `out`; the spring carried to this step's stiffness
+  // (rescale) and projected onto the tangent plane. `a`: contact radius (m), `root`:
+  // sqrt(S_n m*).
+  [[gnu::always_inline]] ProjectedSpring normal_and_spring(const ContactKinematics& k,
+                                                           const PairParameters& p,
+                                                           const StateRef& s, double a, double root,
+                                                           ContactForces& out) const {
+    const double delta = k.overlap;
+    const double sn = 2.0 * p.effective_modulus * a;  // S_n = 2 E* a
+    const double kn = 2.0 / 3.0 * sn;                 // F = (4/3) E* sqrt(R*) delta^1.5
+    const double beta = p.damping_beta;
+    // F_n,d = -2 sqrt(5/6) beta sqrt(S_n m*) v_n (Tsuji-type, beta <= 0 here)
+    const double gn = -2.0 * std::sqrt(5.0 / 6.0) * beta * root;
+    const double fel = kn * delta;
+    const double fd = gn * k.overlap_rate;
+    out.elastic_normal_force = fel;
+    out.normal_force = fel + fd;
+    out.normal_elastic_energy = 0.4 * fel * delta;  // integral of F dδ = (2/5) k_n δ^2
+    out.stored_energy = out.normal_elastic_energy;
+    out.damping_dissipation = fd * k.overlap_rate * k.dt;
+    if (rescale_)
+      out.friction_dissipation +=
+          follow_stiffness(s.vec3(slots_.spring), s.f64(slots_.stiffness), mindlin(p, a));
+    return project_spring(s.vec3(slots_.spring), k.normal);
+  }
+  // Mindlin S_t = 8 G* a (N/m)
+  static double mindlin(const PairParameters& p, double a) {
+    return 8.0 * p.effective_shear_modulus * a;
+  }
+  // The friction law's coefficients: k_t (N/m), c_t (N s/m) and the Coulomb limits (N).
+  struct Tangential {
+    double kt = 0, ct = 0;
+    FrictionLimit lim;
+  };
+  Tangential tangential(const PairParameters& p, double a, double root,
+                        const ContactForces& out) const {
+    const double gn = -2.0 * std::sqrt(5.0 / 6.0) * p.damping_beta * root;
+    // the same root for S_t = 8 G* a: sqrt(S_t m*) = sqrt(S_n m*) sqrt(4 G* / E*)
+    const double gt = tangential_damping_ ? gn * p.shear_normal_root : 0.0;
+    return {mindlin(p, a), gt, friction_limit(p, out.normal_force)};
+  }
+
   bool tangential_damping_;
   bool rescale_;  // tangential = "mindlin_rescale_force"
   TangentialSlots slots_;

@@ -68,22 +68,44 @@ inline FrictionLimit friction_limit(const PairParameters& p, double normal_force
   return {p.friction * std::abs(normal_force), p.dynamic_friction * std::abs(normal_force)};
 }
 
+// The stored spring carried into the current tangent plane keeping its length, in two halves so
+// that a batch of contacts can take its divisions and square roots in one loop (ContactBatch):
+// project_spring() removes the part along the normal and keeps the squared lengths before and
+// after; restore_length() is the factor sqrt(before / after) that gives the length back (1 when
+// the spring is zero or lies along the normal: nothing to restore).
+struct ProjectedSpring {
+  Vec3 xi;            // the stored spring less its part along the normal (m)
+  double before = 1;  // |xi|^2 before the projection (m^2)
+  double after = 1;   // |xi|^2 after it (m^2)
+};
+
+inline ProjectedSpring project_spring(const Vec3& stored, const Vec3& normal) {
+  ProjectedSpring s{stored, 1.0, 1.0};
+  const double len2 = norm2(stored);
+  if (len2 > 0.0) {
+    s.xi -= dot(s.xi, normal) * normal;
+    const double l2 = norm2(s.xi);
+    if (l2 > 0.0) {
+      s.before = len2;
+      s.after = l2;
+    }
+  }
+  return s;
+}
+
+inline double restore_length(double before, double after) {
+  return std::sqrt(before / after);
+}
+
 // kt: tangential stiffness (N/m), ct: tangential damping (N s/m), `lim`: the limits (N),
-// `stored`: the contact's stored displacement (m), `sliding`: its flag (null: mu_d = mu_s
-// everywhere). Sets out.tangential_force, adds to out.stored_energy, out.damping_dissipation,
+// `xi`: the contact's stored displacement already rotated into the current tangent plane (m),
+// written back to `stored`, `sliding`: its flag (null: mu_d = mu_s everywhere). Sets
+// out.tangential_force, adds to out.stored_energy, out.damping_dissipation,
 // out.friction_dissipation.
-inline void coulomb_tangential(const ContactKinematics& k, double kt, double ct, FrictionLimit lim,
-                               Vec3& stored, float* sliding, ContactForces& out) {
+inline void coulomb_rotated(const ContactKinematics& k, double kt, double ct, FrictionLimit lim,
+                            Vec3 xi, Vec3& stored, float* sliding, ContactForces& out) {
   const double limit = lim.stick;
   const bool was_sliding = sliding != nullptr && *sliding != 0.0f;
-  Vec3 xi = stored;
-  // rotate into the current tangent plane, preserving the magnitude
-  const double len2 = norm2(xi);
-  if (len2 > 0.0) {
-    xi -= dot(xi, k.normal) * k.normal;
-    const double l2 = norm2(xi);
-    if (l2 > 0.0) xi *= std::sqrt(len2 / l2);
-  }
   const Vec3 trial = xi + k.tangential_velocity * k.dt;
   xi = trial;
   // the spring force |k_t xi| against the limits, compared squared (its root only when it slides)
@@ -110,6 +132,14 @@ inline void coulomb_tangential(const ContactKinematics& k, double kt, double ct,
   stored = xi;
   out.tangential_force = ft;
   out.stored_energy += 0.5 * kt * norm2(xi);
+}
+
+// coulomb_rotated() of the stored spring rotated into the current tangent plane, keeping its
+// magnitude (`stored`: the contact's stored displacement, m).
+inline void coulomb_tangential(const ContactKinematics& k, double kt, double ct, FrictionLimit lim,
+                               Vec3& stored, float* sliding, ContactForces& out) {
+  const ProjectedSpring s = project_spring(stored, k.normal);
+  coulomb_rotated(k, kt, ct, lim, s.xi * restore_length(s.before, s.after), stored, sliding, out);
 }
 
 }  // namespace comminute

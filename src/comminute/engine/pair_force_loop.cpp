@@ -93,18 +93,32 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
     for (auto& c : ck) c.dt = dt;
     std::fill(out.begin(), out.end(), ContactForces{});
     std::array<Vec3, kRun> gap;  // x_i - x_j of the gathered pairs
-    std::array<double, kRun> gap2, reach;
+    std::array<double, kRun> gap2, reach, dist;
     std::size_t nrun = 0;
     auto flush = [&] {
+      if (nrun == 0) return;
       pipeline.evaluate(ContactBatch{nrun, ck.data(), pp.data(), index.data(), &slots, out.data()});
+      // particle i's force and torque stay in registers over its consecutive contacts (the list
+      // is sorted by i; j != i, so no other write of the run touches them): the same sums in the
+      // same order as adding to F[i], T[i] contact by contact
+      std::uint32_t held = who[0].i;
+      Vec3 fi = F[held], ti = T[held];
       for (std::size_t c = 0; c < nrun; ++c) {
         const ContactForces& o = out[c];
         const Vec3& nrm = ck[c].normal;
-        const auto [i, j, ri, rj] = who[c];
+        // by reference: a copy of the record stalls on its two stores
+        const auto& [i, j, ri, rj] = who[c];
+        if (i != held) {
+          F[held] = fi;
+          T[held] = ti;
+          held = i;
+          fi = F[i];
+          ti = T[i];
+        }
         tl.add(o);
         const Vec3 fc = o.normal_force * nrm + o.tangential_force;
-        F[i] += fc;
-        T[i] += o.rolling_torque - ri * cross(nrm, o.tangential_force);
+        fi += fc;
+        ti += o.rolling_torque - ri * cross(nrm, o.tangential_force);
         const Vec3 tj = -(o.rolling_torque + rj * cross(nrm, o.tangential_force));
         if (j >= own0 && j < own1) {
           F[j] -= fc;
@@ -129,6 +143,8 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
                 {i, static_cast<std::int32_t>(j), X[i], X[j], fc, o.normal_force});
         }
       }
+      F[held] = fi;
+      T[held] = ti;
       std::fill_n(out.begin(), nrun, ContactForces{});
       nrun = 0;
     };
@@ -162,16 +178,17 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
           state.clear(k);
         }
       }
-      // 2. the kinematics of the run's contacts
+      // 2. the kinematics of the run's contacts; the distances' roots first, in a loop of their
+      // own (independent roots overlap instead of each contact waiting on its own)
+      for (std::size_t c = 0; c < nrun; ++c) dist[c] = std::sqrt(gap2[c]);
       for (std::size_t c = 0; c < nrun; ++c) {
         const std::size_t kc = index[c];
         const std::uint32_t i = first[kc], j = second[kc];
         if (sp && !active[kc]) sp->starts.push_back({i, static_cast<std::int32_t>(j)});
         active[kc] = 1;
         const double rsum = reach[c];
-        const double dist = std::sqrt(gap2[c]);
-        const Vec3 nrm = gap[c] / dist;
-        const double overlap = rsum - dist;
+        const Vec3 nrm = gap[c] / dist[c];
+        const double overlap = rsum - dist[c];
         const double ri = R[i] - 0.5 * overlap, rj = R[j] - 0.5 * overlap;
         const Vec3 vrel = V[i] - V[j] - cross(W[i], ri * nrm) - cross(W[j], rj * nrm);
         const double vn = dot(vrel, nrm);

@@ -20,6 +20,17 @@ struct DemSetup {
   std::string contact_keys;  // more lines of the [contact] table (TOML)
 };
 
+// Gravity, sliding friction 0.5 and EPSD rolling resistance (rolling friction 0.1): a bed whose
+// contacts carry tangential and rolling springs.
+inline DemSetup frictional_rolling_setup() {
+  DemSetup s;
+  s.gravity = {0, 0, -9.81};
+  s.friction = 0.5;
+  s.rolling = "epsd";
+  s.rolling_friction = 0.1;
+  return s;
+}
+
 inline std::unique_ptr<Simulation> make_simulation(const DemSetup& s) {
   auto sim = std::make_unique<Simulation>();
   sim->materials.add({"m", s.density, s.youngs, s.poisson});

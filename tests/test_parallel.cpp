@@ -19,12 +19,7 @@ namespace {
 
 std::unique_ptr<Simulation> lattice_bed(int threads, std::unique_ptr<Module> module = nullptr) {
   omp_set_num_threads(threads);
-  DemSetup s;
-  s.gravity = {0, 0, -9.81};
-  s.friction = 0.5;
-  s.rolling = "epsd";
-  s.rolling_friction = 0.1;
-  auto sim = make_simulation(s);
+  auto sim = make_simulation(frictional_rolling_setup());
   const double r = 0.001, a = 2.05 * r;
   const int nx = 20;
   sim->walls.push_back(

@@ -24,6 +24,9 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j "$(nproc)" --target bench_dem_throughput bench_make_dense_state >/dev/null
 case " $cases " in *" dense100k "*) [ -f bench/data/dense_N100000.data ] || bench/make_dense_state.sh ;; esac
 mkdir -p bench/logs
+# one sitting per run: the summary takes medians over every *_rN.log, so logs of an earlier sitting
+# must not stay beside this one's
+rm -f bench/logs/*_r[0-9]*.log bench/logs/*_r[0-9]*.log.time
 data_of() {
   case $1 in
     settle20k) echo "$peers/data/settle_N20000.data" ;;

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "breakage_engine_fixture.hpp"
+#include "restart_twin.hpp"
 
 using namespace comminute;
 using namespace comminute::testing;
@@ -212,14 +213,9 @@ std::unique_ptr<Simulation> small_gas(breakage::BreakageModule** module,
 TEST(BreakageEngine, CheckpointContinuesExactly) {
   breakage::BreakageModule *ma = nullptr, *mb = nullptr;
   auto a = small_gas(&ma);
-  a->setup();
-  a->run(300);
-  Archive ar;
-  a->save(ar);
-  a->run(300);
   auto b = small_gas(&mb);
-  b->load(ar);
-  b->run(300);
+  a->setup();
+  run_restart_twin(*a, *b, 300, 300);
   ASSERT_GT(ma->breakages(), 0u);
   EXPECT_EQ(ma->breakages(), mb->breakages());
   EXPECT_EQ(ma->pending(), mb->pending());

@@ -11,10 +11,10 @@
 #include <numeric>
 
 #include "breakage_engine_fixture.hpp"
-#include "comminute/core/archive.hpp"
 #include "comminute/core/rng.hpp"
 #include "comminute/geometry/box_wall.hpp"
 #include "dem_fixture.hpp"
+#include "restart_twin.hpp"
 
 using namespace comminute;
 using namespace comminute::testing;
@@ -129,14 +129,9 @@ TEST(CellSort, RestartOfASortingRunIsBitForBit) {
   // the checkpoint must equal the uninterrupted run exactly, slot by slot (same sorts at the same
   // steps, same contact state), including the rebuilds (and sorts) after the restart.
   auto full = shuffled_bed(3);
-  full->run(60);
-  Archive ar;
-  full->save(ar);
-  const std::uint64_t rebuilds_at_save = full->neighbor_rebuilds();
-  full->run(60);
   auto resumed = shuffled_bed(3);
-  resumed->load(ar);
-  resumed->run(60);
+  std::uint64_t rebuilds_at_save = 0;
+  run_restart_twin(*full, *resumed, 60, 60, [&] { rebuilds_at_save = full->neighbor_rebuilds(); });
   omp_set_num_threads(omp_get_num_procs());
   EXPECT_GE(full->neighbor_rebuilds(), rebuilds_at_save + 3);
   EXPECT_EQ(full->neighbor_rebuilds(), resumed->neighbor_rebuilds());
@@ -151,16 +146,13 @@ TEST(CellSort, RestartOfASortingRunIsBitForBit) {
 TEST(CellSort, BreakageRunThatSortsRestartsBitForBit) {
   breakage::BreakageModule *ma = nullptr, *mb = nullptr;
   auto a = sorting_breakage_gas(&ma);
-  a->setup();
-  a->run(300);
-  Archive ar;
-  a->save(ar);
-  const std::uint64_t rebuilds_at_save = a->neighbor_rebuilds();
-  const std::uint64_t breakages_at_save = ma->breakages();
-  a->run(300);
   auto b = sorting_breakage_gas(&mb);
-  b->load(ar);
-  b->run(300);
+  a->setup();
+  std::uint64_t rebuilds_at_save = 0, breakages_at_save = 0;
+  run_restart_twin(*a, *b, 300, 300, [&] {
+    rebuilds_at_save = a->neighbor_rebuilds();
+    breakages_at_save = ma->breakages();
+  });
   omp_set_num_threads(omp_get_num_procs());
   // sorts and breakages on both sides of the checkpoint
   EXPECT_GT(rebuilds_at_save, 2u);

@@ -146,9 +146,7 @@ class HertzMindlin final : public ContactLaw {
     const double delta = k.overlap;
     const double sn = 2.0 * p.effective_modulus * a;  // S_n = 2 E* a
     const double kn = 2.0 / 3.0 * sn;                 // F = (4/3) E* sqrt(R*) delta^1.5
-    const double beta = p.damping_beta;
-    // F_n,d = -2 sqrt(5/6) beta sqrt(S_n m*) v_n (Tsuji-type, beta <= 0 here)
-    const double gn = -2.0 * std::sqrt(5.0 / 6.0) * beta * root;
+    const double gn = normal_damping(p, root);
     const double fel = kn * delta;
     const double fd = gn * k.overlap_rate;
     out.elastic_normal_force = fel;
@@ -161,6 +159,11 @@ class HertzMindlin final : public ContactLaw {
           follow_stiffness(s.vec3(slots_.spring), s.f64(slots_.stiffness), mindlin(p, a));
     return project_spring(s.vec3(slots_.spring), k.normal);
   }
+  // The normal dashpot c_n (N s/m): F_n,d = -2 sqrt(5/6) beta sqrt(S_n m*) v_n, beta <= 0 here
+  // (Tsuji, Tanaka & Ishida, Powder Technol. 71 (1992) 239); `root`: sqrt(S_n m*).
+  static double normal_damping(const PairParameters& p, double root) {
+    return -2.0 * std::sqrt(5.0 / 6.0) * p.damping_beta * root;
+  }
   // Mindlin S_t = 8 G* a (N/m)
   static double mindlin(const PairParameters& p, double a) {
     return 8.0 * p.effective_shear_modulus * a;
@@ -172,7 +175,7 @@ class HertzMindlin final : public ContactLaw {
   };
   Tangential tangential(const PairParameters& p, double a, double root,
                         const ContactForces& out) const {
-    const double gn = -2.0 * std::sqrt(5.0 / 6.0) * p.damping_beta * root;
+    const double gn = normal_damping(p, root);
     // the same root for S_t = 8 G* a: sqrt(S_t m*) = sqrt(S_n m*) sqrt(4 G* / E*)
     const double gt = tangential_damping_ ? gn * p.shear_normal_root : 0.0;
     return {mindlin(p, a), gt, friction_limit(p, out.normal_force)};

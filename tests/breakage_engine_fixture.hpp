@@ -1,6 +1,7 @@
 #pragma once
 // Engine-level set-ups for the breakage tests: a "gas" of weak particles in a closed box (many
 // breakage events in few steps) and a bed compressed by a platen.
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -54,6 +55,27 @@ inline std::unique_ptr<Simulation> box_gas(double friction, std::uint64_t seed) 
   lattice(*sim, d, a, L, 3.0, rng);
   sim->walls.push_back(
       std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{L, L, L}, std::array<bool, 6>{}));
+  return sim;
+}
+
+// The gas of box_gas (friction 0.3) as a breakage test runs it: weak Tavares particles
+// (weak_material: E_inf 0.02 J/kg, sigma 0.3; fragments below 0.3 of the parent's diameter go to
+// the fines by mass; 20 % of the absorbed energy given as radial speed) breakable down to
+// `min_breakable` (m), the breakage module registered (returned in `module`), and a time step of a
+// fifth of the Rayleigh time of the smallest fragment (r = 0.18 mm); `seed` jitters the lattice and
+// the starting velocities.
+inline std::unique_ptr<Simulation> breakage_gas(breakage::BreakageModule** module,
+                                                double min_breakable = 0.0012,
+                                                std::uint64_t seed = 29) {
+  auto sim = box_gas(0.3, seed);
+  std::vector<std::optional<breakage::MaterialBreakage>> mats;
+  mats.emplace_back(weak_material(0.02, 0.3, min_breakable, 0.3, breakage::FinesRule::mass, 0.2));
+  auto mod =
+      std::make_unique<breakage::BreakageModule>(std::move(mats), breakage::BreakageOptions{});
+  mod->register_fields(sim->particles);
+  *module = mod.get();
+  sim->modules.push_back(std::move(mod));
+  sim->dt = 0.2 * 3.1416 * 0.00018 * std::sqrt(2500 / (5e7 / 2.6)) / (0.1631 * 0.3 + 0.8766);
   return sim;
 }
 

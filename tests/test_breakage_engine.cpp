@@ -191,29 +191,12 @@ TEST(BreakageEngine, ThirdAndLaterGenerationsBreak) {
   RecordProperty("third_plus_generation_breakages", std::to_string(third_plus));
 }
 
-namespace {
-// The gas set-up of test 3, small; `seed` jitters the lattice and the starting velocities.
-std::unique_ptr<Simulation> small_gas(breakage::BreakageModule** module,
-                                      double min_breakable = 0.0012, std::uint64_t seed = 29) {
-  auto sim = box_gas(0.3, seed);
-  std::vector<std::optional<breakage::MaterialBreakage>> mats;
-  mats.emplace_back(weak_material(0.02, 0.3, min_breakable, 0.3, breakage::FinesRule::mass, 0.2));
-  auto mod =
-      std::make_unique<breakage::BreakageModule>(std::move(mats), breakage::BreakageOptions{});
-  mod->register_fields(sim->particles);
-  *module = mod.get();
-  sim->modules.push_back(std::move(mod));
-  sim->dt = 0.2 * 3.1416 * 0.00018 * std::sqrt(2500 / (5e7 / 2.6)) / (0.1631 * 0.3 + 0.8766);
-  return sim;
-}
-}  // namespace
-
 // Checkpoint: a run saved mid-way (fragments growing, damage, random streams) and continued in
 // a fresh simulation reproduces the uninterrupted run exactly (same thread count).
 TEST(BreakageEngine, CheckpointContinuesExactly) {
   breakage::BreakageModule *ma = nullptr, *mb = nullptr;
-  auto a = small_gas(&ma);
-  auto b = small_gas(&mb);
+  auto a = breakage_gas(&ma);
+  auto b = breakage_gas(&mb);
   a->setup();
   run_restart_twin(*a, *b, 300, 300);
   ASSERT_GT(ma->breakages(), 0u);
@@ -236,7 +219,7 @@ TEST(BreakageEngine, CheckpointContinuesExactly) {
 TEST(BreakageEngine, InPlaceNeighbourUpdateKeepsEveryContact) {
   for (std::uint64_t seed : {29, 6, 8}) {
     breakage::BreakageModule* module = nullptr;
-    auto sim = small_gas(&module, 0.0012, seed);
+    auto sim = breakage_gas(&module, 0.0012, seed);
     sim->setup();
     std::uint64_t missing = 0, steps_with_breakage_without_rebuild = 0;
     for (int step = 0; step < 600; ++step) {
@@ -271,7 +254,7 @@ TEST(BreakageEngine, InPlaceNeighbourUpdateKeepsEveryContact) {
 // rounding (1e-12 relative), and nothing may stay pending in this dilute gas (solid fraction 0.3).
 TEST(BreakageEngine, FragmentsGrowToTheirFullSize) {
   breakage::BreakageModule* module = nullptr;
-  auto sim = small_gas(&module, 0.0029);
+  auto sim = breakage_gas(&module, 0.0029);
   sim->setup();
   std::uint64_t steps = 0;
   while (steps < 600 || (module->pending() > 0 && steps < 6000)) {

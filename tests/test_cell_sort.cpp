@@ -49,22 +49,13 @@ std::unique_ptr<Simulation> shuffled_bed(int sort_every) {
   return sim;
 }
 
-// The breakage gas (breakage_engine_fixture.hpp: weak 3 mm spheres at up to 3 m/s in a closed
-// box) sorting at every rebuild: parents are replaced by fragments between sorts, so damage, the
-// growing fragments' fields and the module's pending work must follow the permutations.
+// The breakage gas (breakage_engine_fixture.hpp, breakage_gas: weak 3 mm spheres at up to 3 m/s in
+// a closed box) sorting at every rebuild: parents are replaced by fragments between sorts, so
+// damage, the growing fragments' fields and the module's pending work must follow the permutations.
 std::unique_ptr<Simulation> sorting_breakage_gas(breakage::BreakageModule** module) {
   omp_set_num_threads(1);
-  auto sim = box_gas(0.3, 29);
-  std::vector<std::optional<breakage::MaterialBreakage>> mats;
-  mats.emplace_back(weak_material(0.02, 0.3, 0.0012, 0.3, breakage::FinesRule::mass, 0.2));
-  auto mod =
-      std::make_unique<breakage::BreakageModule>(std::move(mats), breakage::BreakageOptions{});
-  mod->register_fields(sim->particles);
-  *module = mod.get();
-  sim->modules.push_back(std::move(mod));
+  auto sim = breakage_gas(module);
   sim->options.sort_every = 1;
-  // a fifth of the Rayleigh time of the smallest fragment (r = 0.18 mm), as the breakage tests
-  sim->dt = 0.2 * 3.1416 * 0.00018 * std::sqrt(2500 / (5e7 / 2.6)) / (0.1631 * 0.3 + 0.8766);
   return sim;
 }
 

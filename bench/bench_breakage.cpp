@@ -5,13 +5,16 @@
 // at its first collisions and the fragments break again (down to 1.5 mm); then it times `steps`
 // steps after `warmup` and prints particle-steps per second, with the breakage module ("on") or
 // without it ("off", the same bed and time step). Issue 3's benchmark; results in
-// bench/RESULTS.md ("## Breakage").
+// bench/RESULTS.md ("## Breakage"). Environment: SORT_EVERY (re-sort the particles by cell every
+// this many list rebuilds, >= 0, 0 never; default 20), REPLACEMENT_INTERVAL (the breakage module's
+// replacement_interval, steps >= 1; default 1); any other value is refused (exit code 2).
 #include <fmt/format.h>
 #include <omp.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 #include "comminute/breakage/breakage_module.hpp"
@@ -19,6 +22,22 @@
 #include "comminute/engine/simulation.hpp"
 #include "comminute/geometry/box_wall.hpp"
 #include "comminute/geometry/plane_wall.hpp"
+
+namespace {
+// The integer >= `least` in environment variable `name`, or `fallback` when it is not set; exits
+// with code 2 on anything else (a typo must not run the default set-up under another name).
+int env_count(const char* name, int fallback, int least) {
+  const char* text = std::getenv(name);
+  if (!text) return fallback;
+  char* end = nullptr;
+  const long v = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || v < least || v > std::numeric_limits<int>::max()) {
+    fmt::print(stderr, "error: {}={} is not an integer >= {}\n", name, text, least);
+    std::exit(2);
+  }
+  return static_cast<int>(v);
+}
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace comminute;
@@ -39,8 +58,7 @@ int main(int argc, char** argv) {
   sim.law = ContactLawRegistry::create("hertz_mindlin", CaseFile::parse("").root());
   sim.gravity = {0, 0, 0};
   sim.seed = 5;
-  // (SORT_EVERY: re-sort the particles by cell every this many list rebuilds; default 20)
-  if (const char* k = std::getenv("SORT_EVERY")) sim.options.sort_every = std::atoi(k);
+  sim.options.sort_every = env_count("SORT_EVERY", sim.options.sort_every, 0);
   const double d = 0.003, a = 0.995 * d;  // 0.5 % overlaps: a pre-stressed, contact-rich bed
   const int side = static_cast<int>(std::lround(std::cbrt(static_cast<double>(n_target))));
   const double L = side * a;
@@ -75,8 +93,7 @@ int main(int argc, char** argv) {
     mats[0]->min_fragment_ratio = ratio;
     mats[0]->fines = breakage::FinesRule::mass;
     breakage::BreakageOptions opt;
-    if (const char* k = std::getenv("REPLACEMENT_INTERVAL"))
-      opt.replacement_interval = std::atoi(k);
+    opt.replacement_interval = env_count("REPLACEMENT_INTERVAL", opt.replacement_interval, 1);
     auto m = std::make_unique<breakage::BreakageModule>(std::move(mats), opt);
     module = m.get();
     sim.modules.push_back(std::move(m));

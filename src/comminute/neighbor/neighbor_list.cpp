@@ -279,7 +279,7 @@ void NeighborList::update_in_place(const ParticleStore& p, const std::vector<std
   // keep the pairs of kept particles (slots remapped, order kept): each thread counts its share
   // of the list, then copies it to its offset in spare arrays, which are swapped in
   const std::size_t m = first.size();
-  const int nt = m >= 16384 ? max_threads() : 1;
+  const int nt = m >= kThreadedLoop ? max_threads() : 1;
   std::vector<std::size_t> kept(static_cast<std::size_t>(nt) + 1, 0);
   auto range = [m, nt](int t) {
     return std::make_pair(m * static_cast<std::size_t>(t) / static_cast<std::size_t>(nt),

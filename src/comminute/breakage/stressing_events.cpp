@@ -51,7 +51,8 @@ void StressingEvents::clear(ParticleStore& p, std::size_t s) const {
 void StressingEvents::gather_loads(const Simulation& sim) {
   const auto& p = sim.particles;
   const std::size_t n = p.size();
-  contact_load_.resize(n);  // cleared on all threads: a serial fill of 32 B per slot each step
+  // cleared on all threads (an assign() would be a serial fill of 32 B per slot in every step)
+  contact_load_.resize(n);
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) contact_load_[i] = ContactLoad{};
   const auto& nl = sim.pairs();

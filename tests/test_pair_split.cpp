@@ -31,9 +31,12 @@ std::vector<std::size_t> split_by_definition(const std::vector<std::uint8_t>& ac
   return at;
 }
 
+// The split as the pair force loop makes it, the block costs summed in one share.
 std::vector<std::size_t> split(const std::vector<std::uint8_t>& active, int nt) {
+  std::vector<std::uint64_t> cost(pair_split_blocks(active.size()));
+  pair_block_costs(active.data(), active.size(), 0, cost.size(), cost.data());
   std::vector<std::size_t> at{99};  // reused storage: stale content must not matter
-  balanced_pair_split(active.data(), active.size(), nt, at);
+  split_from_block_costs(active.data(), active.size(), nt, cost.data(), at);
   return at;
 }
 

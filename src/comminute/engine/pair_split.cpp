@@ -51,16 +51,4 @@ void split_from_block_costs(const std::uint8_t* active, std::size_t n, int nt,
   }
 }
 
-void balanced_pair_split(const std::uint8_t* active, std::size_t n, int nt,
-                         std::vector<std::size_t>& at) {
-  if (nt == 1) {
-    at.assign(2, n);
-    at[0] = 0;
-    return;
-  }
-  std::vector<std::uint64_t> cost(pair_split_blocks(n));
-  pair_block_costs(active, n, 0, cost.size(), cost.data());
-  split_from_block_costs(active, n, nt, cost.data(), at);
-}
-
 }  // namespace comminute

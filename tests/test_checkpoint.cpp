@@ -1,6 +1,7 @@
 // Checkpoint files: an Archive goes to HDF5 and comes back byte for byte; broken files give
 // clear errors instead of wrong states.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <algorithm>
 #include <fstream>
@@ -111,4 +112,28 @@ TEST(Checkpoint, MissingOrForeignFileIsAnError) {
   expect_error(dir / "none.h5", "no such file");
   std::ofstream(dir / "text.h5") << "not hdf5 at all\n";
   expect_error(dir / "text.h5", "truncated or corrupt");
+}
+
+TEST(Checkpoint, AnotherFormatVersionIsRefused) {
+  // A checkpoint of another format version (another layout of the state, e.g. the outlet and
+  // sampling-plane logs before format 5) is refused by its version attribute, with both numbers
+  // in the message, instead of being read as this version's layout.
+  const comminute::testing::TestDir dir;
+  Rng rng(3);
+  io::write_checkpoint(dir / "c.h5", random_archive(rng, 5), {});
+  const int older = io::checkpoint_format_version - 1;
+  {
+    const hid_t f = H5Fopen((dir / "c.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(f, 0);
+    const hid_t version = H5Aopen(f, "format_version", H5P_DEFAULT);
+    ASSERT_GE(version, 0);
+    EXPECT_GE(H5Awrite(version, H5T_NATIVE_INT, &older), 0);
+    H5Aclose(version);
+    H5Fclose(f);
+  }
+  const std::string words = "format version " + std::to_string(older) +
+                            " is not the supported version " +
+                            std::to_string(io::checkpoint_format_version);
+  expect_error(dir / "c.h5", words);
+  EXPECT_THROW(io::read_checkpoint_info(dir / "c.h5"), Error);
 }

@@ -47,7 +47,7 @@ class HertzMindlin final : public ContactLaw {
     constexpr std::size_t kStage = 64;
     std::array<double, kStage> arg, a, root, before, after, factor;
     std::array<Vec3, kStage> xi;
-    std::array<Tangential, kStage> co;
+    std::array<double, kStage> stick, slide;  // the Coulomb limits (not zeroed at each call)
     // the sticking law in structure of arrays: the rotated spring, v_t, dt, k_t, c_t in; the
     // trial spring, the squared spring force, the force, its square, the dashpot's work and the
     // spring's energy out
@@ -68,14 +68,16 @@ class HertzMindlin final : public ContactLaw {
         xi[c] = ps.xi;
         before[c] = ps.before;
         after[c] = ps.after;
-        co[c] = tangential(*P[c], a[c], root[c], out[c]);
+        const Tangential co = tangential(*P[c], a[c], root[c], out[c]);
         const Vec3& v = K[c].tangential_velocity;
         vx[c] = v.x;
         vy[c] = v.y;
         vz[c] = v.z;
         dt[c] = K[c].dt;
-        kt[c] = co[c].kt;
-        ct[c] = co[c].ct;
+        kt[c] = co.kt;
+        ct[c] = co.ct;
+        stick[c] = co.lim.stick;
+        slide[c] = co.lim.slide;
       }
       for (std::size_t c = 0; c < n; ++c) factor[c] = restore_length(before[c], after[c]);
       for (std::size_t c = 0; c < n; ++c) {
@@ -106,7 +108,7 @@ class HertzMindlin final : public ContactLaw {
       for (std::size_t c = 0; c < n; ++c) {
         const StateRef s{b.slots, b.index[c0 + c]};
         float* flag = slots_.flag(s);
-        const FrictionLimit lim = co[c].lim;
+        const FrictionLimit lim{stick[c], slide[c]};
         const bool was_sliding = flag != nullptr && *flag != 0.0f;
         const bool slides = spring2[c] > lim.stick * lim.stick ||
                             (was_sliding && spring2[c] > lim.slide * lim.slide);

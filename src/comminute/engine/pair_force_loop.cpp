@@ -48,6 +48,21 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
   const Slots& slots = state.slots();
   const bool rolling = pipeline.has_rolling();
   std::uint8_t* active = state.active.data();
+  // the contact state's columns (the law's spring, ...): a touching pair's slots are read by the
+  // law a run later, so each pair's are asked for as soon as the pair is seen
+  std::array<const char*, 4> columns{};
+  std::array<std::size_t, 4> widths{};
+  std::size_t ncolumns = 0;
+  const auto add_columns = [&](const auto& kind, std::size_t width) {
+    for (const auto* c : kind)
+      if (c != nullptr && ncolumns < columns.size()) {
+        columns[ncolumns] = reinterpret_cast<const char*>(c);
+        widths[ncolumns++] = width;
+      }
+  };
+  add_columns(slots.vec3, sizeof(Vec3));
+  add_columns(slots.f64, sizeof(double));
+  add_columns(slots.f32, sizeof(float));
 #pragma omp parallel num_threads(nt)
   {
     const int t = thread_id();
@@ -164,6 +179,8 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
         __builtin_prefetch(&mat[j]);
         __builtin_prefetch(&F[j], 1);
         __builtin_prefetch(&T[j], 1);
+        for (std::size_t c = 0; c < ncolumns; ++c)
+          __builtin_prefetch(columns[c] + k * widths[c], 1);
         const Vec3 d = X[i] - X[j];
         const double rsum = R[i] + R[j];
         const double dist2 = norm2(d);

@@ -109,3 +109,47 @@ TEST(MeshElementLists, CandidateSearchAmongTheListEqualsTheGridSearch) {
   }
   EXPECT_GT(found, 1000);
 }
+
+TEST(MeshElementLists, TravelOfATurningMeshIsItsDistanceFromTheRotationAxis) {
+  // The lists are rebuilt once the mesh travelled skin/2 in all. A vertex p moves at
+  // |v + w x (p - c)| <= |v| + |w| d(p), d(p) its distance from the rotation axis: a drum turning
+  // about its own axis travels w R dt per step (R = 0.1 m), not w |p - c| dt (up to
+  // sqrt(R^2 + L^2) = 0.112 m from a centre on one end), which rebuilt 12 % more often.
+  const double R = 0.1, L = 0.05, w = std::numbers::pi, dt = 1e-5;
+  auto wall = mesh_wall(drum_side(180, R, L));
+  wall->kinematics.angular_velocity = {0, w, 0};
+  // tolerance: the vertices are R (cos a, sin a) rounded, a few ulps off R
+  EXPECT_NEAR(wall->travel(dt), w * R * dt, 1e-14 * w * R * dt);
+  // about the x axis the farthest vertex is (0, L, R): the cache follows the new axis
+  wall->kinematics.angular_velocity = {w, 0, 0};
+  EXPECT_NEAR(wall->travel(dt), w * std::hypot(R, L) * dt, 1e-14 * w * R * dt);
+}
+
+TEST(MeshElementLists, TravelBoundsEveryVertexDisplacementOfAStep) {
+  // Rotation about a tilted axis through an off-centre point, without and with a translation:
+  // over each step no vertex moves farther than travel(dt) (the bound the rebuild trigger relies
+  // on). Without the translation the bound is tight (the farthest vertex from the axis moves
+  // within 1 % of it); with it, |v| + |w| d exceeds |v + w x r| where the two are not aligned.
+  const double dt = 1e-4;
+  for (const Vec3 v : {Vec3{0, 0, 0}, Vec3{0.05, 0.0, -0.02}}) {
+    auto wall = mesh_wall(drum_side(36, 0.1, 0.05));
+    wall->kinematics.center = {0.02, -0.01, 0.03};
+    wall->kinematics.angular_velocity = {1.0, 2.0, -0.5};
+    wall->kinematics.velocity = v;
+    const auto& body = wall->mesh().vertices();
+    for (int step = 0; step < 50; ++step) {
+      std::vector<Vec3> before;
+      for (const Vec3& b : body) before.push_back(wall->to_world(b));
+      wall->advance(dt);
+      const double bound = wall->travel(dt);
+      double largest = 0;
+      for (std::size_t k = 0; k < body.size(); ++k)
+        largest = std::max(largest, norm(wall->to_world(body[k]) - before[k]));
+      // a vertex moves along a chord (<= the arc |v + w x r| dt); 1e-12: round-off of the pose
+      EXPECT_LE(largest, bound * (1 + 1e-12)) << "step " << step;
+      if (norm(v) == 0) {
+        EXPECT_GT(largest, 0.99 * bound) << "step " << step;
+      }
+    }
+  }
+}

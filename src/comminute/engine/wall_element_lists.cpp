@@ -19,14 +19,6 @@ void WallElementLists::append(std::uint32_t w, std::span<const std::uint32_t> el
   l.start.push_back(static_cast<std::uint32_t>(l.items.size()));
 }
 
-std::optional<std::span<const std::uint32_t>> WallElementLists::find(std::uint32_t w,
-                                                                     std::uint32_t i) const {
-  if (w >= walls_.size()) return std::nullopt;
-  const Lists& l = walls_[w];
-  if (!l.on || i + 1 >= l.start.size()) return std::nullopt;
-  return std::span<const std::uint32_t>(l.items.data() + l.start[i], l.start[i + 1] - l.start[i]);
-}
-
 WallElementLists WallElementLists::remapped(std::span<const std::uint32_t> to_new,
                                             std::size_t n_kept, std::uint32_t removed) const {
   std::vector<std::uint32_t> from(n_kept, removed);  // new slot -> old slot

@@ -22,7 +22,13 @@ class WallElementLists {
   // The list of wall w's next particle.
   void append(std::uint32_t w, std::span<const std::uint32_t> elements);
   // Particle i's list for wall w, or nothing when wall w has no list for it.
-  std::optional<std::span<const std::uint32_t>> find(std::uint32_t w, std::uint32_t i) const;
+  // (in the header: the wall force loop asks once per particle and wall, every step)
+  std::optional<std::span<const std::uint32_t>> find(std::uint32_t w, std::uint32_t i) const {
+    if (w >= walls_.size()) return std::nullopt;
+    const Lists& l = walls_[w];
+    if (!l.on || i + 1 >= l.start.size()) return std::nullopt;
+    return std::span<const std::uint32_t>(l.items.data() + l.start[i], l.start[i + 1] - l.start[i]);
+  }
   bool on(std::uint32_t w) const { return w < walls_.size() && walls_[w].on; }
   // After particles were removed and others appended (PairTracker::replace): the lists of the
   // kept particles at their new slots 0 .. n_kept - 1 (to_new: old slot -> new slot or

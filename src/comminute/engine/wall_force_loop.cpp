@@ -8,6 +8,21 @@
 
 namespace comminute {
 
+namespace {
+constexpr std::size_t kAhead = 8;  // candidates between a particle's prefetch and its use
+
+void prefetch_particle(const ParticleStore& p, std::uint32_t i) {
+  __builtin_prefetch(&p.x[i]);
+  __builtin_prefetch(&p.radius[i]);
+  __builtin_prefetch(&p.v[i]);
+  __builtin_prefetch(&p.w[i]);
+  __builtin_prefetch(&p.mass[i]);
+  __builtin_prefetch(&p.material[i]);
+  __builtin_prefetch(&p.f[i], 1);
+  __builtin_prefetch(&p.t[i], 1);
+}
+}  // namespace
+
 void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
                         const std::vector<std::unique_ptr<Wall>>& walls,
                         const std::vector<WallContactRecord>& candidates,
@@ -110,6 +125,9 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       // passing to an adjacent feature of the same wall can take over the old one's history
       std::size_t end = q + 1;
       while (end < begin[t + 1] && candidates[end].particle == candidates[q].particle) ++end;
+      // the particles near a wall lie scattered in the store: the fields of a particle a few
+      // candidates ahead are asked for now, to be at hand when its turn comes
+      prefetch_particle(p, candidates[std::min(q + kAhead, begin[t + 1] - 1)].particle);
       hits.assign(end - q, WallContact{{}, {}, 0, 0, -1});
       for (std::size_t k = q; k < end; ++k) {
         const WallContactRecord& c = candidates[k];

@@ -286,6 +286,12 @@ double MeshSurface::reach_from(const Vec3& c) const {
   return std::sqrt(r2);
 }
 
+double MeshSurface::reach_from_axis(const Vec3& c, const Vec3& a) const {
+  double r2 = 0;
+  for (const Vec3& p : v_) r2 = std::max(r2, norm2(cross(a, p - c)));
+  return std::sqrt(r2);
+}
+
 std::size_t MeshSurface::bytes() const {
   return v_.capacity() * sizeof(Vec3) + tri_.capacity() * sizeof(tri_[0]) +
          normal_.capacity() * sizeof(Vec3) + area_.capacity() * sizeof(double) +

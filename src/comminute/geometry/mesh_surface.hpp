@@ -54,6 +54,8 @@ class MeshSurface {
   std::size_t patches() const { return n_patch_; }
   // Largest distance of a vertex from point c (m).
   double reach_from(const Vec3& c) const;
+  // Largest distance of a vertex from the line through c along the unit vector a (m).
+  double reach_from_axis(const Vec3& c, const Vec3& a) const;
   std::size_t bytes() const;
 
  private:

@@ -28,9 +28,12 @@ Vec3 MeshWall::to_world(const Vec3& b) const {
   return rotate_to_world(b) + offset_;
 }
 
-Vec3 MeshWall::to_body(const Vec3& x) const {
-  const Vec3 d = x - offset_;
+Vec3 MeshWall::rotate_to_body(const Vec3& d) const {
   return {dot(axes_[0], d), dot(axes_[1], d), dot(axes_[2], d)};
+}
+
+Vec3 MeshWall::to_body(const Vec3& x) const {
+  return rotate_to_body(x - offset_);
 }
 
 int MeshWall::contacts(const Vec3& x, double r, double margin,
@@ -105,13 +108,30 @@ void MeshWall::advance(double dt) {
   if (motion_) motion_->at(motion_time_, kinematics.velocity, kinematics.angular_velocity);
 }
 
-double MeshWall::travel(double dt) const {
-  const Vec3 c = to_body(kinematics.center);
-  if (reach_ < 0 || norm2(c - reach_center_) > 0) {
-    reach_center_ = c;
-    reach_ = mesh_.reach_from(c);
+double MeshWall::axis_reach(const Vec3& c, const Vec3& a) const {
+  // The cache, measured from (c0, a0), bounds the distance from (c, a) for every vertex p:
+  // a x (p - c) = a0 x (p - c0) + (a - a0) x (p - c0) + a x (c0 - c), so the distance is at most
+  // from_axis + |a - a0| from_center + |c - c0| (a and -a give the same line). The cache is
+  // measured anew when that slack exceeds a millionth of the reach: the pose's round-off (which
+  // moves a body-frame centre or axis by ulps from step to step) does not make it rescan the mesh.
+  Reach& q = reach_;
+  const Vec3 along = dot(a, q.axis) < 0 ? -1.0 * a : a;
+  double slack = norm(c - q.center) + norm(along - q.axis) * q.from_center;
+  if (q.from_center < 0 || !(slack <= 1e-6 * q.from_center)) {
+    q = {c, a, mesh_.reach_from(c), mesh_.reach_from_axis(c, a)};
+    slack = 0;
   }
-  return (norm(kinematics.velocity) + norm(kinematics.angular_velocity) * reach_) * dt;
+  return std::min(q.from_axis + slack, q.from_center + norm(c - q.center));
+}
+
+double MeshWall::travel(double dt) const {
+  // a vertex p moves at |v + w x (p - centre)| <= |v| + |w| d(p), d(p) its distance from the
+  // rotation axis: a drum turning about its own axis travels w R dt, whatever its length
+  const Kinematics& k = kinematics;
+  const double w = norm(k.angular_velocity);
+  const double d =
+      w > 0 ? axis_reach(to_body(k.center), rotate_to_body(k.angular_velocity / w)) : 0.0;
+  return (norm(k.velocity) + w * d) * dt;
 }
 
 void MeshWall::wear(int element, double fn, double s) {
@@ -168,7 +188,7 @@ void MeshWall::load(const Archive& a, const std::string& prefix) {
     start_center_ = c0[0];
   }
   wear_volume_ = std::move(wear);
-  reach_ = -1;
+  reach_ = {};
 }
 
 std::size_t MeshWall::bytes() const {

@@ -50,6 +50,7 @@ class MeshWall : public Wall {
 
  private:
   Vec3 to_body(const Vec3& world) const;
+  Vec3 rotate_to_body(const Vec3& world) const;
   Vec3 rotate_to_world(const Vec3& body) const;
   // Brings contacts out[first, end) from the body frame to the world; returns their count.
   int to_world(std::vector<WallContact>& out, std::size_t first) const;
@@ -65,8 +66,16 @@ class MeshWall : public Wall {
   double motion_time_ = 0;                                                 // s
   Vec3 start_center_;  // m, the rotation centre at t = 0 (closed-form poses)
   bool start_center_known_ = false;
-  mutable Vec3 reach_center_;  // body-frame rotation centre of the cached reach
-  mutable double reach_ = -1;  // m, largest vertex distance from it
+  // travel(): the largest distance of a vertex from a body-frame rotation centre and from the
+  // axis through it (m), cached for the centre and axis they were measured from
+  struct Reach {
+    Vec3 center, axis;
+    double from_center = -1, from_axis = -1;  // (< 0: not measured yet)
+  };
+  mutable Reach reach_;
+  // The largest distance of a vertex from the line through body-frame point c along unit a (m),
+  // or an upper bound of it within a millionth of the reach.
+  double axis_reach(const Vec3& c, const Vec3& a) const;
 };
 
 }  // namespace comminute

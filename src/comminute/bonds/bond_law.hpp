@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "comminute/bonds/bond_states.hpp"
 #include "comminute/core/case_table.hpp"
 #include "comminute/core/registry.hpp"
 #include "comminute/core/rng.hpp"
@@ -18,7 +19,8 @@ namespace comminute::bonds {
 
 enum class FailureMode : std::uint8_t { none = 0, tensile = 1, shear = 2 };
 
-// What a bond remembers between steps (plain data: checkpointed as is).
+// What a bond remembers between steps (plain data: checkpointed as is). A list of bonds keeps
+// these fields split by use (BondStates, bond_states.hpp); this is one bond's whole record.
 struct BondState {
   Vec3 normal;                  // unit normal i -> j at the last update
   Vec3 shear_force;             // N, stored shear force on j (parallel bond)
@@ -58,7 +60,7 @@ struct BondStep {
   const double* radius = nullptr;
   const std::uint32_t* slot_i = nullptr;
   const std::uint32_t* slot_j = nullptr;
-  BondState* state = nullptr;
+  BondStates* state = nullptr;   // by bond (live, shape and rest records)
   std::uint8_t* flag = nullptr;  // in: 1 = gone (its particle was removed; skipped), else 0;
                                  // out: 2 = failed in this step
   double dt = 0;

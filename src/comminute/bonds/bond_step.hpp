@@ -8,6 +8,7 @@
 #include <cstddef>
 
 #include "comminute/bonds/bond_law.hpp"
+#include "comminute/bonds/bond_states.hpp"
 
 namespace comminute::bonds {
 
@@ -22,7 +23,7 @@ inline Vec3 bond_point(const BondStep& st, std::size_t b) {
   const std::uint32_t i = st.slot_i[b], j = st.slot_j[b];
   const Vec3 d = st.x[j] - st.x[i];
   const double length = norm(d);
-  const Vec3 n = length > 0 ? d * (1.0 / length) : st.state[b].normal;
+  const Vec3 n = length > 0 ? d * (1.0 / length) : st.state->live[b].normal;
   return bond_point(st.x[i], st.radius[i], st.radius[j], n, length);
 }
 
@@ -93,10 +94,11 @@ BondStepSums update_bonds(const Law& law, const BondStep& st, std::size_t begin,
       deliver_nothing(st, b);
       continue;
     }
-    BondState& s = st.state[b];
+    BondState s = st.state->get(b);  // the whole record: any law's fields
     const BondKinematics k = bond_kinematics(st, st.slot_i[b], st.slot_j[b], s.normal);
     const double before = s.dissipated;
     const BondLoad load = law.advance(s, k.m);  // the law's update(), inlined
+    st.state->set(b, s);
     sums.released += s.dissipated - before;
     if (s.failed != FailureMode::none) {
       st.flag[b] = 2;

@@ -75,11 +75,12 @@ void BondsModule::create_bonds(Simulation& sim) {
 }
 
 void BondsModule::fail(Simulation& sim, std::size_t b, FailureCause cause, const Vec3& at) {
-  BondState& s = bonds_.state[b];
+  BondState s = bonds_.state.get(b);
   if (cause == FailureCause::particle_removed) {  // what the bond held is lost with it
     sim.ledger.bond_dissipated += s.strain_energy;
     s.dissipated += s.strain_energy;
     s.strain_energy = 0;
+    bonds_.state.set(b, s);
   }
   failures_.push_back({sim.time, bonds_.id_i[b], bonds_.id_j[b], at, s.dissipated, cause});
   gone_[b] = 1;
@@ -95,7 +96,8 @@ std::size_t BondsModule::scratch_bytes() const {
   return gone_.capacity() +
          sizeof(Vec3) * (force_.capacity() + torque_i_.capacity() + torque_j_.capacity()) +
          sizeof(BondStepSums) * range_sums_.capacity() +
-         sizeof(std::uint32_t) * (first_.capacity() + entry_.capacity());
+         sizeof(std::uint32_t) * (first_.capacity() + entry_.capacity()) +
+         sizeof(std::uint64_t) * ids_at_index_.capacity();
 }
 
 void BondsModule::index_by_particle(std::size_t n) {
@@ -143,7 +145,12 @@ void BondsModule::apply(Simulation& sim) {
   ParticleStore& p = sim.particles;
   const std::size_t nb = bonds_.size();
   gone_.assign(nb, 0);
-  if (!indexed_ || first_.size() != p.owned() + 1 || !bonds_.current(p)) {
+  // the slots were resolved against ids_at_index_: while the store holds the same ids in the
+  // same slots, every bond's cached slots still hold its particles (no per-bond check)
+  const bool unmoved = indexed_ && first_.size() == p.owned() + 1 &&
+                       ids_at_index_.size() == p.owned() &&
+                       std::equal(ids_at_index_.begin(), ids_at_index_.end(), p.id.begin());
+  if (!unmoved) {
     for (std::size_t b : bonds_.locate(p)) {
       const std::uint32_t k =
           bonds_.slot_i[b] != BondList::none ? bonds_.slot_i[b] : bonds_.slot_j[b];
@@ -154,6 +161,7 @@ void BondsModule::apply(Simulation& sim) {
       gone_.assign(bonds_.size(), 0);
     }
     index_by_particle(p.owned());
+    ids_at_index_.assign(p.id.begin(), p.id.begin() + static_cast<std::ptrdiff_t>(p.owned()));
   }
   // First the bond laws, range by range on all threads, then the loads onto the particles, per
   // particle in bond order: sums and results do not depend on the thread count. On one thread the
@@ -183,7 +191,7 @@ void BondsModule::apply(Simulation& sim) {
   st.radius = p.radius.data();
   st.slot_i = bonds_.slot_i.data();
   st.slot_j = bonds_.slot_j.data();
-  st.state = bonds_.state.data();
+  st.state = &bonds_.state;
   st.flag = gone_.data();
   st.dt = sim.dt;
   st.force = force_.data();
@@ -225,8 +233,8 @@ void BondsModule::apply(Simulation& sim) {
   if (failed == 0) return;
   for (std::size_t b = 0; b < n_bonds; ++b) {
     if (gone_[b] != 2) continue;
-    const BondState& s = bonds_.state[b];
-    fail(sim, b, s.failed == FailureMode::tensile ? FailureCause::tensile : FailureCause::shear,
+    const FailureMode mode = bonds_.state.shape[b].failed;
+    fail(sim, b, mode == FailureMode::tensile ? FailureCause::tensile : FailureCause::shear,
          bond_point(st, b));
   }
   bonds_.remove(gone_);
@@ -261,7 +269,7 @@ void BondsModule::sample(const Simulation& sim) {
     if (f.cause == FailureCause::shear) ++r.shear;
     if (f.cause == FailureCause::particle_removed) ++r.removed;
   }
-  for (const BondState& s : bonds_.state) {
+  for (const BondRest& s : bonds_.state.rest) {
     r.mean_damage += s.damage;
     r.max_damage = std::max(r.max_damage, s.damage);
   }
@@ -270,8 +278,9 @@ void BondsModule::sample(const Simulation& sim) {
   r.dissipated = sim.ledger.bond_dissipated;
   samples_.push_back(r);
   for (std::size_t b = 0; b < bonds_.size(); ++b)
-    if (bonds_.state[b].damage > 0)
-      damage_rows_.push_back({sim.time, bonds_.id_i[b], bonds_.id_j[b], bonds_.state[b].damage});
+    if (bonds_.state.rest[b].damage > 0)
+      damage_rows_.push_back(
+          {sim.time, bonds_.id_i[b], bonds_.id_j[b], bonds_.state.rest[b].damage});
 }
 
 std::vector<Table> BondsModule::tables(const Simulation&) const {

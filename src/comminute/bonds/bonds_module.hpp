@@ -56,7 +56,8 @@ class BondsModule final : public Module, public SeriesSource {
   const BondList& bonds() const { return bonds_; }
   const std::vector<BondFailure>& failures() const { return failures_; }
   bool created() const { return created_; }
-  // Bytes of the per-step scratch at its capacity (flags, loads, per-particle bond index).
+  // Bytes of the per-step scratch at its capacity (flags, loads, per-particle bond index, the
+  // ids the slots were resolved against).
   std::size_t scratch_bytes() const;
   // Makes the bonds now (post_force does it at create_at); public for tests and builders.
   void create_bonds(Simulation& sim);
@@ -94,6 +95,9 @@ class BondsModule final : public Module, public SeriesSource {
   // are made or removed or the slots move.
   std::vector<std::uint32_t> first_, entry_;
   bool indexed_ = false;
+  // The owned particles' ids when the slots were last resolved (locate): while the store's ids
+  // equal these, the bonds' cached slots are current.
+  std::vector<std::uint64_t> ids_at_index_;
 };
 
 }  // namespace comminute::bonds

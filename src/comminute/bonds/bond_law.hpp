@@ -72,6 +72,12 @@ struct BondStep {
   // which the per-particle fold of the arrays adds them, so the sums are the same bit for bit.
   Vec3* particle_force = nullptr;
   Vec3* particle_torque = nullptr;
+  // With particle_force on several threads: per bond, which ends' loads wait (bit 0: i's, bit 1:
+  // j's) because an earlier block of bonds, run by another thread, also loads that particle. A
+  // bond with a waiting end puts its loads into force/torque_i/torque_j as well; they are added
+  // after the threads join, in bond order (BondsModule), so each particle still receives its
+  // loads in bond order.
+  const std::uint8_t* defer = nullptr;
 };
 
 // What a range of bonds adds up to in one step (summed in bond order within the range).

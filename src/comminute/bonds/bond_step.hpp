@@ -70,10 +70,20 @@ inline void deliver(const BondStep& st, std::size_t b, const Vec3& force, const 
                     const Vec3& torque_j) {
   if (st.particle_force) {
     const std::uint32_t i = st.slot_i[b], j = st.slot_j[b];
-    st.particle_force[i] -= force;
-    st.particle_torque[i] -= torque_i;
-    st.particle_force[j] += force;
-    st.particle_torque[j] += torque_j;
+    const std::uint8_t wait = st.defer ? st.defer[b] : 0;
+    if (wait) {  // added after the threads join
+      st.force[b] = force;
+      st.torque_i[b] = torque_i;
+      st.torque_j[b] = torque_j;
+    }
+    if (!(wait & 1u)) {
+      st.particle_force[i] -= force;
+      st.particle_torque[i] -= torque_i;
+    }
+    if (!(wait & 2u)) {
+      st.particle_force[j] += force;
+      st.particle_torque[j] += torque_j;
+    }
     return;
   }
   st.force[b] = force;

@@ -7,6 +7,7 @@
 // energy they dissipated are booked in the engine's ledger (bond_elastic, bond_dissipated).
 #include <array>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "comminute/bonds/bond_failure.hpp"
@@ -98,6 +99,15 @@ class BondsModule final : public Module, public SeriesSource {
   // The owned particles' ids when the slots were last resolved (locate): while the store's ids
   // equal these, the bonds' cached slots are current.
   std::vector<std::uint64_t> ids_at_index_;
+  // The bond ranges of block k of `blocks` (one block per thread), and per bond which ends'
+  // loads wait until the threads join (BondStep::defer: a particle takes its loads directly
+  // only from the first block whose bonds load it), for `blocks` blocks (blocks_; 0: not marked).
+  static std::pair<std::size_t, std::size_t> block_ranges(std::size_t k, std::size_t blocks,
+                                                          std::size_t ranges);
+  void mark_deferred(std::size_t blocks, std::size_t ranges);
+  std::vector<std::uint8_t> defer_;
+  std::vector<std::uint32_t> deferred_;  // the bonds with a waiting end, in bond order
+  std::size_t blocks_ = 0;
 };
 
 }  // namespace comminute::bonds

@@ -74,10 +74,13 @@ struct BondStep {
   Vec3* particle_torque = nullptr;
   // With particle_force on several threads: per bond, which ends' loads wait (bit 0: i's, bit 1:
   // j's) because an earlier block of bonds, run by another thread, also loads that particle. A
-  // bond with a waiting end puts its loads into force/torque_i/torque_j as well; they are added
-  // after the threads join, in bond order (BondsModule), so each particle still receives its
-  // loads in bond order.
+  // bond with a waiting end puts its loads into force/torque_i/torque_j as well, at its place k
+  // in `deferred` (the n_deferred bonds with a waiting end, in bond order: deferred[k] = b); they
+  // are added after the threads join, in bond order (BondsModule), so each particle still
+  // receives its loads in bond order.
   const std::uint8_t* defer = nullptr;
+  const std::uint32_t* deferred = nullptr;
+  std::size_t n_deferred = 0;
 };
 
 // What a range of bonds adds up to in one step (summed in bond order within the range).

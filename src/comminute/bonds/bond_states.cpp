@@ -24,23 +24,22 @@ void BondStates::push_back(const BondState& s) {
 }
 
 BondState BondStates::get(std::size_t b) const {
-  BondState s;
   const BondLive& l = live[b];
   const BondShape& h = shape[b];
   const BondRest& r = rest[b];
-  s.normal = l.normal;
-  s.shear_force = l.shear_force;
-  s.moment = l.moment;
-  s.strain_energy = l.strain_energy;
-  s.length0 = h.length0;
-  s.radius = h.radius;
-  s.tensile_strength = h.tensile_strength;
-  s.shear_strength = h.shear_strength;
-  s.failed = h.failed;
-  s.slip = r.slip;
-  s.damage = r.damage;
-  s.dissipated = r.dissipated;
-  return s;
+  return {.normal = l.normal,
+          .shear_force = l.shear_force,
+          .moment = l.moment,
+          .slip = r.slip,
+          .length0 = h.length0,
+          .radius = h.radius,
+          .tensile_strength = h.tensile_strength,
+          .shear_strength = h.shear_strength,
+          .damage = r.damage,
+          .dissipated = r.dissipated,
+          .strain_energy = l.strain_energy,
+          .failed = h.failed,
+          .padding = {}};
 }
 
 void BondStates::set(std::size_t b, const BondState& s) {

@@ -4,6 +4,7 @@
 // the loop instead of one virtual call per bond. Per bond: the motion of its two particles, the
 // law's update, the force and the two torques the particles receive (added to them afterwards, per
 // particle in bond order, by BondsModule).
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -71,10 +72,12 @@ inline void deliver(const BondStep& st, std::size_t b, const Vec3& force, const 
   if (st.particle_force) {
     const std::uint32_t i = st.slot_i[b], j = st.slot_j[b];
     const std::uint8_t wait = st.defer ? st.defer[b] : 0;
-    if (wait) {  // added after the threads join
-      st.force[b] = force;
-      st.torque_i[b] = torque_i;
-      st.torque_j[b] = torque_j;
+    if (wait) {  // added after the threads join, from its place among the waiting bonds
+      const std::uint32_t* at = std::lower_bound(st.deferred, st.deferred + st.n_deferred, b);
+      const auto k = static_cast<std::size_t>(at - st.deferred);
+      st.force[k] = force;
+      st.torque_i[k] = torque_i;
+      st.torque_j[k] = torque_j;
     }
     if (!(wait & 1u)) {
       st.particle_force[i] -= force;

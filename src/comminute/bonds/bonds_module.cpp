@@ -207,15 +207,11 @@ void BondsModule::apply(Simulation& sim) {
   const std::size_t blocks =
       serial ? 1 : std::max<std::size_t>(1, std::min<std::size_t>(max_threads(), ranges));
   if (direct && blocks_ != blocks) mark_deferred(blocks, ranges);
-  if (direct && blocks == 1) {
-    for (std::vector<Vec3>* a : {&force_, &torque_i_, &torque_j_}) {  // not used: freed
-      a->clear();
-      a->shrink_to_fit();
-    }
-  } else {
-    force_.resize(n_bonds);
-    torque_i_.resize(n_bonds);
-    torque_j_.resize(n_bonds);
+  // per-bond loads: for every bond when measured, else for the waiting bonds only
+  const std::size_t n_loads = !direct ? n_bonds : blocks > 1 ? deferred_.size() : 0;
+  for (std::vector<Vec3>* a : {&force_, &torque_i_, &torque_j_}) {
+    a->resize(n_loads);
+    if (n_loads == 0) a->shrink_to_fit();  // not used: freed
   }
   range_sums_.assign(ranges, {});
   BondStep st;
@@ -234,7 +230,11 @@ void BondsModule::apply(Simulation& sim) {
   if (direct) {
     st.particle_force = p.f.data();
     st.particle_torque = p.t.data();
-    if (blocks > 1) st.defer = defer_.data();
+    if (blocks > 1) {
+      st.defer = defer_.data();
+      st.deferred = deferred_.data();
+      st.n_deferred = deferred_.size();
+    }
   }
   const BondLaw& law = *law_;
   const auto n_blocks = static_cast<std::int64_t>(blocks);
@@ -248,16 +248,17 @@ void BondsModule::apply(Simulation& sim) {
   }
   if (!direct) add_to_particles(p);
   if (direct && blocks > 1) {  // the waiting loads, in bond order
-    for (const std::uint32_t b : deferred_) {
+    for (std::size_t k = 0; k < deferred_.size(); ++k) {
+      const std::uint32_t b = deferred_[k];
       if (gone_[b] == 1) continue;  // its particle is gone: it carries nothing
       const std::uint32_t i = bonds_.slot_i[b], j = bonds_.slot_j[b];
       if (defer_[b] & 1u) {
-        p.f[i] -= force_[b];
-        p.t[i] -= torque_i_[b];
+        p.f[i] -= force_[k];
+        p.t[i] -= torque_i_[k];
       }
       if (defer_[b] & 2u) {
-        p.f[j] += force_[b];
-        p.t[j] += torque_j_[b];
+        p.f[j] += force_[k];
+        p.t[j] += torque_j_[k];
       }
     }
   }

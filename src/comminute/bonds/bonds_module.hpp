@@ -85,8 +85,9 @@ class BondsModule final : public Module, public SeriesSource {
   void index_by_particle(std::size_t n);
   void add_to_particles(ParticleStore& p) const;
 
-  // Scratch of a step, per bond: removal flag (1: particle gone, 2: failed), the force on j (N)
-  // and the torques on i and j (N m); per range of kRange bonds, what the range adds up to.
+  // Scratch of a step, per bond: removal flag (1: particle gone, 2: failed); the force on j (N)
+  // and the torques on i and j (N m), per bond on a step that measures stress, else per waiting
+  // bond (deferred_; none on one thread); per range of kRange bonds, what the range adds up to.
   std::vector<std::uint8_t> gone_;
   std::vector<Vec3> force_, torque_i_, torque_j_;
   std::vector<BondStepSums> range_sums_;

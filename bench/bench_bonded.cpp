@@ -70,8 +70,7 @@ int main(int argc, char** argv) {
       nb = l.size();
       // the list's arrays (ids, slots, state records) at their capacities
       bond_bytes = l.id_i.capacity() * sizeof(std::uint64_t) * 2 +
-                   l.slot_i.capacity() * sizeof(std::uint32_t) * 2 +
-                   l.state.capacity() * sizeof(bonds::BondState);
+                   l.slot_i.capacity() * sizeof(std::uint32_t) * 2 + l.state.capacity_bytes();
       scratch_bytes = b->scratch_bytes();
     }
     const double steps_d = static_cast<double>(steps);

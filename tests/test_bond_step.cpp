@@ -65,6 +65,8 @@ std::size_t check_batch_equals_single(const BondLaw& law, double strain, const S
                                d / norm(d), rng));
   }
   std::vector<BondState> single = state;
+  BondStates split;  // as a bond list keeps them: hot and cold records apart
+  split.assign(state);
   const std::size_t nb = sc.si.size();
   std::vector<std::uint8_t> flag = sc.flag;
   std::vector<Vec3> force(nb), ti(nb), tj(nb);
@@ -74,13 +76,14 @@ std::size_t check_batch_equals_single(const BondLaw& law, double strain, const S
                     .radius = sc.radius.data(),
                     .slot_i = sc.si.data(),
                     .slot_j = sc.sj.data(),
-                    .state = state.data(),
+                    .state = &split,
                     .flag = flag.data(),
                     .dt = 1e-6,
                     .force = force.data(),
                     .torque_i = ti.data(),
                     .torque_j = tj.data()};
   const BondStepSums sums = law.update_range(st, 0, nb);
+  state = split.records();
   double released = 0, elastic = 0;
   std::size_t failed = 0;
   for (std::size_t b = 0; b < nb; ++b) {

@@ -27,6 +27,7 @@ void BondsModule::make_bond(Simulation& sim, std::uint32_t i, std::uint32_t j) {
         "{:.4g} s): set [simulation] time_step",
         p.id[i], p.id[j], limit, sim.dt));
   bonds_.add(p.id[i], i, p.id[j], j, s);
+  indexed_ = false;  // the per-particle index lacks the new bond
 }
 
 void BondsModule::bond_pairs(Simulation& sim,

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "comminute/bonds/bond_states.hpp"
 #include "comminute/core/case_table.hpp"
 #include "comminute/core/registry.hpp"
 #include "comminute/core/rng.hpp"
@@ -18,7 +19,8 @@ namespace comminute::bonds {
 
 enum class FailureMode : std::uint8_t { none = 0, tensile = 1, shear = 2 };
 
-// What a bond remembers between steps (plain data: checkpointed as is).
+// What a bond remembers between steps (plain data: checkpointed as is). A list of bonds keeps
+// these fields split by use (BondStates, bond_states.hpp); this is one bond's whole record.
 struct BondState {
   Vec3 normal;                  // unit normal i -> j at the last update
   Vec3 shear_force;             // N, stored shear force on j (parallel bond)
@@ -58,7 +60,7 @@ struct BondStep {
   const double* radius = nullptr;
   const std::uint32_t* slot_i = nullptr;
   const std::uint32_t* slot_j = nullptr;
-  BondState* state = nullptr;
+  BondStates* state = nullptr;   // by bond (live, shape and rest records)
   std::uint8_t* flag = nullptr;  // in: 1 = gone (its particle was removed; skipped), else 0;
                                  // out: 2 = failed in this step
   double dt = 0;
@@ -70,6 +72,15 @@ struct BondStep {
   // which the per-particle fold of the arrays adds them, so the sums are the same bit for bit.
   Vec3* particle_force = nullptr;
   Vec3* particle_torque = nullptr;
+  // With particle_force on several threads: per bond, which ends' loads wait (bit 0: i's, bit 1:
+  // j's) because an earlier block of bonds, run by another thread, also loads that particle. A
+  // bond with a waiting end puts its loads into force/torque_i/torque_j as well, at its place k
+  // in `deferred` (the n_deferred bonds with a waiting end, in bond order: deferred[k] = b); they
+  // are added after the threads join, in bond order (BondsModule), so each particle still
+  // receives its loads in bond order.
+  const std::uint8_t* defer = nullptr;
+  const std::uint32_t* deferred = nullptr;
+  std::size_t n_deferred = 0;
 };
 
 // What a range of bonds adds up to in one step (summed in bond order within the range).

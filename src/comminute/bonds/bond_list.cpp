@@ -66,7 +66,7 @@ void BondList::remove(const std::vector<std::uint8_t>& gone) {
     id_j[k] = id_j[b];
     slot_i[k] = slot_i[b];
     slot_j[k] = slot_j[b];
-    state[k] = state[b];
+    state.move(b, k);
     ++k;
   }
   id_i.resize(k);
@@ -79,19 +79,20 @@ void BondList::remove(const std::vector<std::uint8_t>& gone) {
 void BondList::save(Archive& a, const std::string& prefix) const {
   a.put(prefix + "id_i", id_i);
   a.put(prefix + "id_j", id_j);
-  a.put(prefix + "state", state);
+  a.put(prefix + "state", state.records());  // whole records: the split is not in the file
 }
 
 void BondList::load(const Archive& a, const std::string& prefix) {
   id_i = a.get<std::uint64_t>(prefix + "id_i");
   id_j = a.get<std::uint64_t>(prefix + "id_j");
-  state = a.get<BondState>(prefix + "state");
-  if (id_j.size() != id_i.size() || state.size() != id_i.size())
+  const std::vector<BondState> records = a.get<BondState>(prefix + "state");
+  if (id_j.size() != id_i.size() || records.size() != id_i.size())
     throw Error("checkpoint entries '" + prefix + "id_i', 'id_j' and 'state' differ in length");
-  for (const BondState& s : state)
+  for (const BondState& s : records)
     if (!(s.radius > 0) || !(s.length0 > 0) || !(s.damage >= 0 && s.damage < 1) ||
         s.failed != FailureMode::none)
       throw Error("checkpoint entry '" + prefix + "state' holds an invalid bond");
+  state.assign(records);
   slot_i.assign(size(), none);
   slot_j.assign(size(), none);
 }

@@ -4,10 +4,12 @@
 // the loop instead of one virtual call per bond. Per bond: the motion of its two particles, the
 // law's update, the force and the two torques the particles receive (added to them afterwards, per
 // particle in bond order, by BondsModule).
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
 #include "comminute/bonds/bond_law.hpp"
+#include "comminute/bonds/bond_states.hpp"
 
 namespace comminute::bonds {
 
@@ -22,7 +24,7 @@ inline Vec3 bond_point(const BondStep& st, std::size_t b) {
   const std::uint32_t i = st.slot_i[b], j = st.slot_j[b];
   const Vec3 d = st.x[j] - st.x[i];
   const double length = norm(d);
-  const Vec3 n = length > 0 ? d * (1.0 / length) : st.state[b].normal;
+  const Vec3 n = length > 0 ? d * (1.0 / length) : st.state->live[b].normal;
   return bond_point(st.x[i], st.radius[i], st.radius[j], n, length);
 }
 
@@ -69,10 +71,22 @@ inline void deliver(const BondStep& st, std::size_t b, const Vec3& force, const 
                     const Vec3& torque_j) {
   if (st.particle_force) {
     const std::uint32_t i = st.slot_i[b], j = st.slot_j[b];
-    st.particle_force[i] -= force;
-    st.particle_torque[i] -= torque_i;
-    st.particle_force[j] += force;
-    st.particle_torque[j] += torque_j;
+    const std::uint8_t wait = st.defer ? st.defer[b] : 0;
+    if (wait) {  // added after the threads join, from its place among the waiting bonds
+      const std::uint32_t* at = std::lower_bound(st.deferred, st.deferred + st.n_deferred, b);
+      const auto k = static_cast<std::size_t>(at - st.deferred);
+      st.force[k] = force;
+      st.torque_i[k] = torque_i;
+      st.torque_j[k] = torque_j;
+    }
+    if (!(wait & 1u)) {
+      st.particle_force[i] -= force;
+      st.particle_torque[i] -= torque_i;
+    }
+    if (!(wait & 2u)) {
+      st.particle_force[j] += force;
+      st.particle_torque[j] += torque_j;
+    }
     return;
   }
   st.force[b] = force;
@@ -93,10 +107,11 @@ BondStepSums update_bonds(const Law& law, const BondStep& st, std::size_t begin,
       deliver_nothing(st, b);
       continue;
     }
-    BondState& s = st.state[b];
+    BondState s = st.state->get(b);  // the whole record: any law's fields
     const BondKinematics k = bond_kinematics(st, st.slot_i[b], st.slot_j[b], s.normal);
     const double before = s.dissipated;
     const BondLoad load = law.advance(s, k.m);  // the law's update(), inlined
+    st.state->set(b, s);
     sums.released += s.dissipated - before;
     if (s.failed != FailureMode::none) {
       st.flag[b] = 2;

@@ -75,11 +75,12 @@ void BondsModule::create_bonds(Simulation& sim) {
 }
 
 void BondsModule::fail(Simulation& sim, std::size_t b, FailureCause cause, const Vec3& at) {
-  BondState& s = bonds_.state[b];
+  BondState s = bonds_.state.get(b);
   if (cause == FailureCause::particle_removed) {  // what the bond held is lost with it
     sim.ledger.bond_dissipated += s.strain_energy;
     s.dissipated += s.strain_energy;
     s.strain_energy = 0;
+    bonds_.state.set(b, s);
   }
   failures_.push_back({sim.time, bonds_.id_i[b], bonds_.id_j[b], at, s.dissipated, cause});
   gone_[b] = 1;
@@ -95,7 +96,9 @@ std::size_t BondsModule::scratch_bytes() const {
   return gone_.capacity() +
          sizeof(Vec3) * (force_.capacity() + torque_i_.capacity() + torque_j_.capacity()) +
          sizeof(BondStepSums) * range_sums_.capacity() +
-         sizeof(std::uint32_t) * (first_.capacity() + entry_.capacity());
+         sizeof(std::uint32_t) * (first_.capacity() + entry_.capacity()) +
+         sizeof(std::uint64_t) * ids_at_index_.capacity() + defer_.capacity() +
+         sizeof(std::uint32_t) * deferred_.capacity();
 }
 
 void BondsModule::index_by_particle(std::size_t n) {
@@ -114,6 +117,34 @@ void BondsModule::index_by_particle(std::size_t n) {
     entry_[next[bonds_.slot_j[b]]++] = e | 1u;
   }
   indexed_ = true;
+  blocks_ = 0;  // the waiting ends are marked again (mark_deferred)
+}
+
+std::pair<std::size_t, std::size_t> BondsModule::block_ranges(std::size_t k, std::size_t blocks,
+                                                              std::size_t ranges) {
+  return {k * ranges / blocks, (k + 1) * ranges / blocks};
+}
+
+void BondsModule::mark_deferred(std::size_t blocks, std::size_t ranges) {
+  const std::size_t nb = bonds_.size();
+  constexpr std::uint32_t unowned = 0xFFFFFFFFu;
+  std::vector<std::uint32_t> first_block(first_.empty() ? 0 : first_.size() - 1, unowned);
+  defer_.assign(nb, 0);
+  deferred_.clear();
+  for (std::size_t k = 0; k < blocks; ++k) {
+    const auto [r0, r1] = block_ranges(k, blocks, ranges);
+    const auto blk = static_cast<std::uint32_t>(k);
+    for (std::size_t b = r0 * kRange; b < std::min(r1 * kRange, nb); ++b) {
+      std::uint8_t wait = 0;
+      for (const std::uint32_t slot : {bonds_.slot_i[b], bonds_.slot_j[b]}) {
+        if (first_block[slot] == unowned) first_block[slot] = blk;
+        wait = static_cast<std::uint8_t>(wait >> 1 | (first_block[slot] != blk ? 2u : 0u));
+      }
+      defer_[b] = wait;
+      if (wait) deferred_.push_back(static_cast<std::uint32_t>(b));
+    }
+  }
+  blocks_ = blocks;
 }
 
 void BondsModule::add_to_particles(ParticleStore& p) const {
@@ -143,7 +174,12 @@ void BondsModule::apply(Simulation& sim) {
   ParticleStore& p = sim.particles;
   const std::size_t nb = bonds_.size();
   gone_.assign(nb, 0);
-  if (!indexed_ || first_.size() != p.owned() + 1 || !bonds_.current(p)) {
+  // the slots were resolved against ids_at_index_: while the store holds the same ids in the
+  // same slots, every bond's cached slots still hold its particles (no per-bond check)
+  const bool unmoved = indexed_ && first_.size() == p.owned() + 1 &&
+                       ids_at_index_.size() == p.owned() &&
+                       std::equal(ids_at_index_.begin(), ids_at_index_.end(), p.id.begin());
+  if (!unmoved) {
     for (std::size_t b : bonds_.locate(p)) {
       const std::uint32_t k =
           bonds_.slot_i[b] != BondList::none ? bonds_.slot_i[b] : bonds_.slot_j[b];
@@ -154,27 +190,29 @@ void BondsModule::apply(Simulation& sim) {
       gone_.assign(bonds_.size(), 0);
     }
     index_by_particle(p.owned());
+    ids_at_index_.assign(p.id.begin(), p.id.begin() + static_cast<std::ptrdiff_t>(p.owned()));
   }
-  // First the bond laws, range by range on all threads, then the loads onto the particles, per
-  // particle in bond order: sums and results do not depend on the thread count. On one thread the
-  // laws hand the loads straight to the particles in bond order, the same additions in the same
-  // order, without the per-bond load arrays (unless a stress measurement reads them).
+  // The bond laws run range by range, in blocks of consecutive ranges, one block per thread; the
+  // loads reach each particle in bond order, so sums and results do not depend on the thread
+  // count. The laws hand the loads straight to the particles: a particle loaded by bonds of
+  // several blocks receives them directly only from the first of those blocks, and from the later
+  // ones after the threads join, in bond order (mark_deferred). Only a stress measurement, which
+  // reads each bond's force, takes all loads through the per-bond arrays (add_to_particles).
   const std::size_t n_bonds = bonds_.size();
   ContactStress* stress = sim.contacts().stress();
   const bool measured = stress && stress->armed();
   const bool serial = n_bonds < kParallelMin || max_threads() == 1;
-  const bool direct = serial && !measured;
-  if (direct) {
-    for (std::vector<Vec3>* a : {&force_, &torque_i_, &torque_j_}) {  // not used: freed
-      a->clear();
-      a->shrink_to_fit();
-    }
-  } else {
-    force_.resize(n_bonds);
-    torque_i_.resize(n_bonds);
-    torque_j_.resize(n_bonds);
-  }
+  const bool direct = !measured;
   const std::size_t ranges = (n_bonds + kRange - 1) / kRange;
+  const std::size_t blocks =
+      serial ? 1 : std::max<std::size_t>(1, std::min<std::size_t>(max_threads(), ranges));
+  if (direct && blocks_ != blocks) mark_deferred(blocks, ranges);
+  // per-bond loads: for every bond when measured, else for the waiting bonds only
+  const std::size_t n_loads = !direct ? n_bonds : blocks > 1 ? deferred_.size() : 0;
+  for (std::vector<Vec3>* a : {&force_, &torque_i_, &torque_j_}) {
+    a->resize(n_loads);
+    if (n_loads == 0) a->shrink_to_fit();  // not used: freed
+  }
   range_sums_.assign(ranges, {});
   BondStep st;
   st.x = p.x.data();
@@ -183,7 +221,7 @@ void BondsModule::apply(Simulation& sim) {
   st.radius = p.radius.data();
   st.slot_i = bonds_.slot_i.data();
   st.slot_j = bonds_.slot_j.data();
-  st.state = bonds_.state.data();
+  st.state = &bonds_.state;
   st.flag = gone_.data();
   st.dt = sim.dt;
   st.force = force_.data();
@@ -192,16 +230,38 @@ void BondsModule::apply(Simulation& sim) {
   if (direct) {
     st.particle_force = p.f.data();
     st.particle_torque = p.t.data();
+    if (blocks > 1) {
+      st.defer = defer_.data();
+      st.deferred = deferred_.data();
+      st.n_deferred = deferred_.size();
+    }
   }
   const BondLaw& law = *law_;
-  const auto n_ranges = static_cast<std::int64_t>(ranges);
+  const auto n_blocks = static_cast<std::int64_t>(blocks);
 #pragma omp parallel for schedule(static) if (!serial)
-  for (std::int64_t r = 0; r < n_ranges; ++r) {
-    const std::size_t begin = static_cast<std::size_t>(r) * kRange;
-    range_sums_[static_cast<std::size_t>(r)] =
-        law.update_range(st, begin, std::min(begin + kRange, n_bonds));
+  for (std::int64_t k = 0; k < n_blocks; ++k) {
+    const auto [r0, r1] = block_ranges(static_cast<std::size_t>(k), blocks, ranges);
+    for (std::size_t r = r0; r < r1; ++r) {
+      const std::size_t begin = r * kRange;
+      range_sums_[r] = law.update_range(st, begin, std::min(begin + kRange, n_bonds));
+    }
   }
   if (!direct) add_to_particles(p);
+  if (direct && blocks > 1) {  // the waiting loads, in bond order
+    for (std::size_t k = 0; k < deferred_.size(); ++k) {
+      const std::uint32_t b = deferred_[k];
+      if (gone_[b] == 1) continue;  // its particle is gone: it carries nothing
+      const std::uint32_t i = bonds_.slot_i[b], j = bonds_.slot_j[b];
+      if (defer_[b] & 1u) {
+        p.f[i] -= force_[k];
+        p.t[i] -= torque_i_[k];
+      }
+      if (defer_[b] & 2u) {
+        p.f[j] += force_[k];
+        p.t[j] += torque_j_[k];
+      }
+    }
+  }
   double elastic = 0;
   std::size_t failed = 0;
   for (const BondStepSums& r : range_sums_) {
@@ -225,8 +285,8 @@ void BondsModule::apply(Simulation& sim) {
   if (failed == 0) return;
   for (std::size_t b = 0; b < n_bonds; ++b) {
     if (gone_[b] != 2) continue;
-    const BondState& s = bonds_.state[b];
-    fail(sim, b, s.failed == FailureMode::tensile ? FailureCause::tensile : FailureCause::shear,
+    const FailureMode mode = bonds_.state.shape[b].failed;
+    fail(sim, b, mode == FailureMode::tensile ? FailureCause::tensile : FailureCause::shear,
          bond_point(st, b));
   }
   bonds_.remove(gone_);
@@ -261,7 +321,7 @@ void BondsModule::sample(const Simulation& sim) {
     if (f.cause == FailureCause::shear) ++r.shear;
     if (f.cause == FailureCause::particle_removed) ++r.removed;
   }
-  for (const BondState& s : bonds_.state) {
+  for (const BondRest& s : bonds_.state.rest) {
     r.mean_damage += s.damage;
     r.max_damage = std::max(r.max_damage, s.damage);
   }
@@ -270,8 +330,9 @@ void BondsModule::sample(const Simulation& sim) {
   r.dissipated = sim.ledger.bond_dissipated;
   samples_.push_back(r);
   for (std::size_t b = 0; b < bonds_.size(); ++b)
-    if (bonds_.state[b].damage > 0)
-      damage_rows_.push_back({sim.time, bonds_.id_i[b], bonds_.id_j[b], bonds_.state[b].damage});
+    if (bonds_.state.rest[b].damage > 0)
+      damage_rows_.push_back(
+          {sim.time, bonds_.id_i[b], bonds_.id_j[b], bonds_.state.rest[b].damage});
 }
 
 std::vector<Table> BondsModule::tables(const Simulation&) const {

@@ -7,6 +7,7 @@
 // energy they dissipated are booked in the engine's ledger (bond_elastic, bond_dissipated).
 #include <array>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "comminute/bonds/bond_failure.hpp"
@@ -56,7 +57,8 @@ class BondsModule final : public Module, public SeriesSource {
   const BondList& bonds() const { return bonds_; }
   const std::vector<BondFailure>& failures() const { return failures_; }
   bool created() const { return created_; }
-  // Bytes of the per-step scratch at its capacity (flags, loads, per-particle bond index).
+  // Bytes of the per-step scratch at its capacity (flags, loads, per-particle bond index, the
+  // ids the slots were resolved against).
   std::size_t scratch_bytes() const;
   // Makes the bonds now (post_force does it at create_at); public for tests and builders.
   void create_bonds(Simulation& sim);
@@ -83,8 +85,9 @@ class BondsModule final : public Module, public SeriesSource {
   void index_by_particle(std::size_t n);
   void add_to_particles(ParticleStore& p) const;
 
-  // Scratch of a step, per bond: removal flag (1: particle gone, 2: failed), the force on j (N)
-  // and the torques on i and j (N m); per range of kRange bonds, what the range adds up to.
+  // Scratch of a step, per bond: removal flag (1: particle gone, 2: failed); the force on j (N)
+  // and the torques on i and j (N m), per bond on a step that measures stress, else per waiting
+  // bond (deferred_; none on one thread); per range of kRange bonds, what the range adds up to.
   std::vector<std::uint8_t> gone_;
   std::vector<Vec3> force_, torque_i_, torque_j_;
   std::vector<BondStepSums> range_sums_;
@@ -94,6 +97,18 @@ class BondsModule final : public Module, public SeriesSource {
   // are made or removed or the slots move.
   std::vector<std::uint32_t> first_, entry_;
   bool indexed_ = false;
+  // The owned particles' ids when the slots were last resolved (locate): while the store's ids
+  // equal these, the bonds' cached slots are current.
+  std::vector<std::uint64_t> ids_at_index_;
+  // The bond ranges of block k of `blocks` (one block per thread), and per bond which ends'
+  // loads wait until the threads join (BondStep::defer: a particle takes its loads directly
+  // only from the first block whose bonds load it), for `blocks` blocks (blocks_; 0: not marked).
+  static std::pair<std::size_t, std::size_t> block_ranges(std::size_t k, std::size_t blocks,
+                                                          std::size_t ranges);
+  void mark_deferred(std::size_t blocks, std::size_t ranges);
+  std::vector<std::uint8_t> defer_;
+  std::vector<std::uint32_t> deferred_;  // the bonds with a waiting end, in bond order
+  std::size_t blocks_ = 0;
 };
 
 }  // namespace comminute::bonds

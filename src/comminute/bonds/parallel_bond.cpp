@@ -207,23 +207,26 @@ BondStepSums ParallelBond::update_range(const BondStep& st, std::size_t begin,
                                         std::size_t end) const {
   BondStepSums sums;
   Batch t;
+  BondLive* const live = st.state->live.data();
+  const BondShape* const shape = st.state->shape.data();
   for (std::size_t b0 = begin; b0 < end; b0 += kBatch) {
     const std::size_t n = std::min(kBatch, end - b0);
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t b = b0 + k;
-      if (b + kAhead < end) {  // the state records and particles of a bond further on
-        const char* ahead = reinterpret_cast<const char*>(st.state + b + kAhead);
+      if (b + kAhead < end) {  // the live and shape records and particles of a bond further on
+        const char* ahead = reinterpret_cast<const char*>(live + b + kAhead);
         __builtin_prefetch(ahead, 1);
         __builtin_prefetch(ahead + 64, 1);
-        __builtin_prefetch(ahead + 128, 1);
+        __builtin_prefetch(shape + b + kAhead);
         const std::uint32_t i = st.slot_i[b + kAhead], j = st.slot_j[b + kAhead];
         __builtin_prefetch(st.x + i), __builtin_prefetch(st.x + j);
         __builtin_prefetch(st.v + i), __builtin_prefetch(st.v + j);
         __builtin_prefetch(st.w + i), __builtin_prefetch(st.w + j);
       }
-      const BondState& s = st.state[b];
-      Vec3 d = s.normal * s.length0, dv, wi, wj;
-      double ri = s.radius, rj = s.radius;  // a gone bond: finite values, its results unused
+      const BondLive& s = live[b];
+      const BondShape& h = shape[b];
+      Vec3 d = s.normal * h.length0, dv, wi, wj;
+      double ri = h.radius, rj = h.radius;  // a gone bond: finite values, its results unused
       if (!st.flag[b]) {
         const std::uint32_t i = st.slot_i[b], j = st.slot_j[b];
         d = st.x[j] - st.x[i];
@@ -240,18 +243,18 @@ BondStepSums ParallelBond::update_range(const BondStep& st, std::size_t begin,
       t.nx[k] = s.normal.x, t.ny[k] = s.normal.y, t.nz[k] = s.normal.z;
       t.fx[k] = s.shear_force.x, t.fy[k] = s.shear_force.y, t.fz[k] = s.shear_force.z;
       t.mx[k] = s.moment.x, t.my[k] = s.moment.y, t.mz[k] = s.moment.z;
-      t.length0[k] = s.length0, t.radius[k] = s.radius;
-      t.tensile[k] = s.tensile_strength, t.shear[k] = s.shear_strength;
+      t.length0[k] = h.length0, t.radius[k] = h.radius;
+      t.tensile[k] = h.tensile_strength, t.shear[k] = h.shear_strength;
     }
     advance_batch(*this, t, n, st.dt);
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t b = b0 + k;
-      BondState& s = st.state[b];
+      BondLive& s = live[b];
       if (st.flag[b]) {  // gone: nothing
         deliver_nothing(st, b);
         continue;
       }
-      if (s.failed != FailureMode::none) {  // failed before: nothing, as update_bonds() does
+      if (shape[b].failed != FailureMode::none) {  // failed before: nothing, as update_bonds()
         st.flag[b] = 2;
         ++sums.failed;
         deliver(st, b, {}, {}, {});
@@ -261,10 +264,12 @@ BondStepSums ParallelBond::update_range(const BondStep& st, std::size_t begin,
       s.shear_force = {t.fx[k], t.fy[k], t.fz[k]};
       s.moment = {t.mx[k], t.my[k], t.mz[k]};
       s.strain_energy = t.energy[k];
-      if (t.fails[k] != 0) {
-        const double before = s.dissipated;
-        fail(s, t.tension[k]);
-        sums.released += s.dissipated - before;
+      if (t.fails[k] != 0) {  // rare: on the whole record
+        BondState whole = st.state->get(b);
+        const double before = whole.dissipated;
+        fail(whole, t.tension[k]);
+        st.state->set(b, whole);
+        sums.released += whole.dissipated - before;
         st.flag[b] = 2;
         ++sums.failed;
         deliver(st, b, {}, {}, {});  // zeros, as the fold of the arrays adds them

@@ -1,6 +1,7 @@
 // The engine's per-contact state store: slots declared by the sub-models, carried with their
 // swap rules when the neighbour list is rebuilt, gathered on in-place updates, checkpointed.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <numeric>
@@ -113,6 +114,65 @@ TEST(ContactState, CarryInPlaceEqualsTheCopyForAnyPlan) {
       f.expect_holds(k, e < 0 ? ContactStateStore::none : from[ue], e >= 0 && reversed[ue] != 0,
                      trial);
     }
+  }
+}
+
+// A neighbour list's carry at the size of a dense bed (tens of thousands of contacts) runs on all
+// threads: the chains of in-place moves are followed from their starts in parallel, closed cycles
+// after. Plans like a rebuild's (slots drift a little, local reorderings make chains and cycles;
+// a longer and a shorter list) must give exactly the copy's result on one and on two threads.
+TEST(ContactState, CarryOnAllThreadsEqualsTheCopyForLargePlans) {
+  const int saved = omp_get_max_threads();
+  std::mt19937 gen(777);
+  for (int trial = 0; trial < 4; ++trial) {
+    const std::size_t n_old = 60000, n_new = trial % 2 == 0 ? 64000 : 56000;
+    ContactStateStore s;
+    const SlotId spring = s.declare_vec3("spring", SwapRule::negate);
+    const SlotId stiff = s.declare_f64("stiffness", SwapRule::keep);
+    s.carry({}, {}, {}, 64000);  // room for the longer list: the in-place path
+    s.carry({}, {}, {}, n_old);
+    auto spring_of = [](double k) { return Vec3{1.0 + k, -0.5 * k, 7.0}; };
+    for (std::size_t k = 0; k < n_old; ++k) {
+      s.at(k).vec3(spring) = spring_of(static_cast<double>(k));
+      s.at(k).f64(stiff) = 100.0 + static_cast<double>(k);
+      s.active[k] = 1;
+    }
+    // half the old contacts carried, in rising order, to the same share of the new slots in the
+    // same order, then shuffled within windows of 8 (chains and cycles of moves)
+    std::vector<std::uint32_t> from, to;
+    for (std::uint32_t k = 0; k < n_old; ++k)
+      if (gen() % 2 == 0) from.push_back(k);
+    std::vector<std::uint32_t> slots(n_new);
+    std::iota(slots.begin(), slots.end(), 0u);
+    std::shuffle(slots.begin(), slots.end(), gen);
+    to.assign(slots.begin(), slots.begin() + static_cast<std::ptrdiff_t>(from.size()));
+    std::sort(to.begin(), to.end());
+    for (std::size_t w = 0; w + 8 <= to.size(); w += 8)
+      std::shuffle(to.begin() + static_cast<std::ptrdiff_t>(w),
+                   to.begin() + static_cast<std::ptrdiff_t>(w + 8), gen);
+    ASSERT_GE(from.size(), 16384u);  // large enough to run on all threads
+    std::vector<std::uint8_t> reversed(from.size());
+    for (auto& r : reversed) r = static_cast<std::uint8_t>(gen() % 2);
+    omp_set_num_threads(1 + trial / 2);
+    s.carry(from, to, reversed, n_new);
+    omp_set_num_threads(saved);
+    ASSERT_EQ(s.size(), n_new);
+    std::vector<std::int64_t> carried_from(n_new, -1);
+    for (std::size_t e = 0; e < from.size(); ++e)
+      carried_from[to[e]] = static_cast<std::int64_t>(e);
+    std::size_t wrong = 0;
+    for (std::size_t k = 0; k < n_new; ++k) {
+      const std::int64_t e = carried_from[k];
+      if (e < 0) {
+        wrong += s.at(k).vec3(spring) != Vec3{} || s.at(k).f64(stiff) != 0.0 || s.active[k] != 0;
+        continue;
+      }
+      const auto ue = static_cast<std::size_t>(e);
+      const Vec3 v = spring_of(static_cast<double>(from[ue]));
+      wrong += s.at(k).vec3(spring) != (reversed[ue] ? -v : v) ||
+               s.at(k).f64(stiff) != 100.0 + static_cast<double>(from[ue]) || s.active[k] != 1;
+    }
+    EXPECT_EQ(wrong, 0u) << "trial " << trial;
   }
 }
 

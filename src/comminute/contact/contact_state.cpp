@@ -115,41 +115,75 @@ void refill(std::vector<T>& data, std::size_t size, T fresh) {
   data.assign(size, fresh);
 }
 
+// Loops over this many contacts or more run on all threads.
+constexpr std::size_t kThreadedCarry = 16384;
+
+// The carry e' that reads old slot q (from[e'] == q), or from.size() when none does: from[] rises,
+// and the carry that reads the slot another carry e writes is found near e (the lists keep their
+// order, so the slots of a pair drift little between builds), so it is searched outwards from e
+// in doubling steps, then bisected.
+std::size_t source_near(const std::vector<std::uint32_t>& from, std::size_t q, std::size_t e) {
+  const std::size_t m = from.size();
+  std::size_t lo = 0, hi = m;  // from[lo - 1] < q <= from[hi]: the answer lies in [lo, hi)
+  if (from[e] < q) {
+    std::size_t step = 1;
+    lo = e + 1;
+    while (lo + step - 1 < m && from[lo + step - 1] < q) {
+      lo += step;
+      step *= 2;
+    }
+    hi = std::min(m, lo + step - 1);
+  } else {
+    std::size_t step = 1;
+    hi = e;
+    while (hi >= step && from[hi - step] >= q) {
+      hi -= step;
+      step *= 2;
+    }
+    lo = hi >= step ? hi - step + 1 : 0;
+  }
+  const auto it = std::lower_bound(from.begin() + static_cast<std::ptrdiff_t>(lo),
+                                   from.begin() + static_cast<std::ptrdiff_t>(hi), q);
+  return it != from.end() && *it == q ? static_cast<std::size_t>(it - from.begin()) : m;
+}
+
 // Column c of the new list: fresh everywhere but at to[e], which takes old from[e]. When the
 // column has room and from[] rises (the neighbour list's plans), the values move in place along
 // chains: the value that leaves for to[e] displaces the one there, which the carry whose source
-// that is (found by bisection of from[]) takes next, so each value is read before it is
-// overwritten and no second copy of the column or of the carried values is held. Else the carried
-// values are gathered first, so only they are held twice, not the whole column.
+// that is takes next, so each value is read before it is overwritten and no second copy of the
+// column or of the carried values is held. Else the carried values are gathered first, so only
+// they are held twice, not the whole column.
+//
+// The chains are disjoint (each slot is written by one carry and read by at most one), so they
+// are followed on all threads: a thread walks the chains that start in its share of the carries
+// (a chain starts at a carry whose source slot no carry writes), never a slot of another's chain.
+// What is left are closed cycles, walked on one thread after. The result is that of any order.
 template <class T>
 void carry_column(std::vector<T>& data, SwapRule rule, const std::vector<std::uint32_t>& from,
                   const std::vector<std::uint32_t>& to, const std::vector<std::uint8_t>& reversed,
-                  const std::vector<std::uint8_t>& carried_to, std::size_t size) {
+                  const std::vector<std::uint8_t>& carried_to, std::size_t size, bool rising) {
   const std::size_t m = from.size();
-  const bool rising = std::adjacent_find(from.begin(), from.end(),
-                                         [](auto a, auto b) { return a >= b; }) == from.end();
+  const int nt = std::max(m, size) >= kThreadedCarry ? max_threads() : 1;
+  const auto sm = static_cast<std::ptrdiff_t>(m), ssize = static_cast<std::ptrdiff_t>(size);
   if (!rising || size > data.capacity()) {
     std::vector<T> kept(m);
-    for (std::size_t e = 0; e < m; ++e)
+#pragma omp parallel for schedule(static) num_threads(nt)
+    for (std::ptrdiff_t e = 0; e < sm; ++e)
       kept[e] = reversed[e] ? swapped(data[from[e]], rule) : data[from[e]];
     refill(data, size, T{});
-    for (std::size_t e = 0; e < m; ++e) data[to[e]] = kept[e];
+#pragma omp parallel for schedule(static) num_threads(nt)
+    for (std::ptrdiff_t e = 0; e < sm; ++e) data[to[e]] = kept[e];
     return;
   }
   if (size > data.size()) data.resize(size, T{});  // within the capacity: no copy
-  std::vector<bool> done(m, false);
-  auto source_of = [&from](std::size_t q) {  // the carry reading slot q, or m
-    const auto it = std::lower_bound(from.begin(), from.end(), q);
-    return it != from.end() && *it == q ? static_cast<std::size_t>(it - from.begin()) : from.size();
-  };
-  for (std::size_t e0 = 0; e0 < m; ++e0) {
-    if (done[e0]) continue;
-    std::size_t e = e0;
+  const std::size_t n_read = data.size();          // slots a carry may read: below this
+  std::vector<std::uint8_t> done(m, 0);
+  auto walk = [&](std::size_t e) {
     T v = reversed[e] ? swapped(data[from[e]], rule) : data[from[e]];
     while (true) {
-      done[e] = true;
+      done[e] = 1;
       const std::size_t q = to[e];
-      const std::size_t next = q < data.size() ? source_of(q) : m;
+      const std::size_t next = q < n_read ? source_near(from, q, e) : m;
       if (next == m || done[next]) {
         data[q] = v;
         break;
@@ -159,9 +193,17 @@ void carry_column(std::vector<T>& data, SwapRule rule, const std::vector<std::ui
       e = next;
       v = reversed[e] ? swapped(w, rule) : w;
     }
+  };
+#pragma omp parallel for schedule(static) num_threads(nt)
+  for (std::ptrdiff_t e = 0; e < sm; ++e) {
+    const std::size_t src = from[e];
+    if (src >= size || !carried_to[src]) walk(static_cast<std::size_t>(e));  // a chain's start
   }
+  for (std::size_t e = 0; e < m; ++e)  // closed cycles
+    if (!done[e]) walk(e);
   data.resize(size);
-  for (std::size_t q = 0; q < size; ++q)
+#pragma omp parallel for schedule(static) num_threads(nt)
+  for (std::ptrdiff_t q = 0; q < ssize; ++q)
     if (!carried_to[q]) data[q] = T{};
 }
 
@@ -212,12 +254,17 @@ void gather_column(std::vector<T>& data, const std::vector<std::uint32_t>& from,
 void ContactStateStore::carry(const std::vector<std::uint32_t>& from,
                               const std::vector<std::uint32_t>& to,
                               const std::vector<std::uint8_t>& reversed, std::size_t size) {
-  // the new flags first: they tell the columns which contacts are fresh
+  // the new flags first: they tell the columns which contacts are fresh (each carry writes its
+  // own flag: distinct slots, on all threads)
   refill(active, size, std::uint8_t{0});
-  for (std::uint32_t k : to) active[k] = 1;
-  for (auto& c : vec3_) carry_column(c.data, c.swap, from, to, reversed, active, size);
-  for (auto& c : f32_) carry_column(c.data, c.swap, from, to, reversed, active, size);
-  for (auto& c : f64_) carry_column(c.data, c.swap, from, to, reversed, active, size);
+  const auto m = static_cast<std::ptrdiff_t>(to.size());
+#pragma omp parallel for schedule(static) if (m >= static_cast <std::ptrdiff_t>(kThreadedCarry))
+  for (std::ptrdiff_t e = 0; e < m; ++e) active[to[e]] = 1;
+  const bool rising = std::adjacent_find(from.begin(), from.end(),
+                                         [](auto a, auto b) { return a >= b; }) == from.end();
+  for (auto& c : vec3_) carry_column(c.data, c.swap, from, to, reversed, active, size, rising);
+  for (auto& c : f32_) carry_column(c.data, c.swap, from, to, reversed, active, size, rising);
+  for (auto& c : f64_) carry_column(c.data, c.swap, from, to, reversed, active, size, rising);
   refresh();
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// Thread helpers. OpenMP is used with static schedules only, so that a run with the same thread
-// count is bit-for-bit reproducible (needed for checkpoint/restart).
+// Thread helpers. OpenMP is used with static schedules, or with dynamic ones whose pieces are
+// fixed in advance and joined in piece order, so that a run with the same thread count is
+// bit-for-bit reproducible (needed for checkpoint/restart).
 #include <omp.h>
 
 #include <cstddef>

@@ -9,7 +9,8 @@
 namespace comminute {
 
 namespace {
-constexpr std::size_t kAhead = 8;  // candidates between a particle's prefetch and its use
+constexpr std::size_t kChunk = 256;  // candidates per chunk (about)
+constexpr std::size_t kAhead = 8;    // candidates between a particle's prefetch and its use
 
 void prefetch_particle(const ParticleStore& p, std::uint32_t i) {
   __builtin_prefetch(&p.x[i]);
@@ -31,135 +32,143 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
                         std::vector<WallContactRecord>& touching,
                         std::vector<EndedContact>& ended) {
   const std::size_t nc = candidates.size();
-  const int nt = nc >= kParallelMin / 2 ? max_threads() : 1;
+  // chunks of about kChunk candidates, each ending at a particle boundary
+  const std::size_t nchunk = std::max<std::size_t>(1, (nc + kChunk - 1) / kChunk);
   auto& begin = begin_;
-  begin.assign(static_cast<std::size_t>(nt) + 1, nc);
+  begin.assign(nchunk + 1, nc);
   begin[0] = 0;
-  for (int t = 1; t < nt; ++t) {
-    std::size_t b = std::max(begin[t - 1], nc * t / nt);
+  for (std::size_t c = 1; c < nchunk; ++c) {
+    std::size_t b = std::max(begin[c - 1], nc * c / nchunk);
     while (b > 0 && b < nc && candidates[b].particle == candidates[b - 1].particle) ++b;
-    begin[t] = b;
+    begin[c] = b;
   }
+  const int nt = nc >= kParallelMin / 2 ? max_threads() : 1;
   const CollisionRecord* record = pipeline.collisions();
+  if (parts_.size() < nchunk) parts_.resize(nchunk);
+  if (scratch_.size() < static_cast<std::size_t>(nt)) scratch_.resize(static_cast<std::size_t>(nt));
   auto& part = parts_;
-  part.resize(static_cast<std::size_t>(nt));
   const Slots& slots = state.slots();
   ContactStress* cs = pipeline.stress();
   const bool armed = cs && cs->armed();
   const bool list = armed && cs->contact_list_wanted();
   const bool rolling = pipeline.has_rolling();
+  // which thread takes which chunk does not matter: a chunk's particles are its own, and its sums
+  // are combined in chunk order below
 #pragma omp parallel num_threads(nt)
   {
-    const int t = thread_id();
-    WallTally& mine = part[t];
-    mine.energy = {};
-    mine.force.assign(walls.size(), Vec3{});
-    mine.torque.assign(walls.size(), Vec3{});
-    mine.touching.clear();
-    mine.wear.clear();
-    mine.ended.clear();
-    mine.starts.clear();
-    mine.contacts.clear();
-    // the force of candidate q touching as `hit` (not touching: its state is cleared)
-    auto force = [&](std::size_t q, const WallContact& hit) {
-      const WallContactRecord& c = candidates[q];
-      const std::uint32_t i = c.particle;
-      Wall& w = *walls[c.wall];
-      if (hit.overlap <= 0) {
-        if (state.active[q]) {
-          if (record) mine.ended.push_back({i, c.wall, true, record->totals(state.at(q))});
-          state.clear(q);
-        }
-        return;
-      }
-      if (cs && !state.active[q])
-        mine.starts.push_back({i, -1 - static_cast<std::int32_t>(c.wall)});
-      state.active[q] = 1;
-      const Vec3 nrm = hit.normal;
-      const double overlap = hit.overlap;
-      const double ri = p.radius[i] - overlap;
-      const Vec3 vwall = w.kinematics.velocity_at(hit.point);
-      const Vec3 vrel = p.v[i] - cross(p.w[i], ri * nrm) - vwall;
-      const double vn = dot(vrel, nrm);
-      ContactKinematics ck;
-      ck.dt = dt;
-      ck.normal = nrm;
-      ck.overlap = overlap;
-      ck.overlap_rate = -vn;
-      ck.tangential_velocity = vrel - vn * nrm;
-      ck.effective_radius = p.radius[i];
-      ck.effective_mass = p.mass[i];
-      if (rolling) {  // read by the rolling models only (as in the pair loop)
-        ck.relative_angular_velocity = p.w[i];
-        ck.effective_inertia = p.inertia[i];
-      }
-      const PairParameters& pp = materials.pair(p.material[i], w.material);
-      ContactForces out;
-      pipeline.evaluate(ck, pp, StateRef{&slots, q}, out);
-      const Vec3 fc = out.normal_force * nrm + out.tangential_force;
-      p.f[i] += fc;
-      p.t[i] += out.rolling_torque - ri * cross(nrm, out.tangential_force);
-      mine.force[c.wall] -= fc;
-      mine.torque[c.wall] -= cross(hit.point - w.kinematics.center, fc);
-      if (armed) {  // Love–Weber: a particle's slots are all in this thread's range
-        add_sym_outer(cs->moment[i], fc, hit.point - p.x[i], 1.0);
-        if (list)
-          mine.contacts.push_back(
-              {i, -1 - static_cast<std::int32_t>(c.wall), p.x[i], hit.point, fc, out.normal_force});
-      }
-      mine.energy.add(out);
-      mine.energy.wall_work += dot(fc, vwall) * dt;  // power of the wall's force on the particle
-      if (w.tracks_wear() && hit.element >= 0)
-        mine.wear.push_back(
-            {c.wall, hit.element, out.normal_force, norm(ck.tangential_velocity) * dt});
-      WallContactRecord rec = c;
-      rec.feature = hit.feature;
-      rec.candidate = static_cast<std::uint32_t>(q);
-      mine.touching.push_back(rec);
-    };
-    auto& found = mine.found;
-    auto& hits = mine.hits;
-    std::size_t q = begin[t];
-    while (q < begin[t + 1]) {
-      // the candidates of one particle, [q, end): all are looked up first, so that a contact
-      // passing to an adjacent feature of the same wall can take over the old one's history
-      std::size_t end = q + 1;
-      while (end < begin[t + 1] && candidates[end].particle == candidates[q].particle) ++end;
-      // the particles near a wall lie scattered in the store: the fields of a particle a few
-      // candidates ahead are asked for now, to be at hand when its turn comes
-      prefetch_particle(p, candidates[std::min(q + kAhead, begin[t + 1] - 1)].particle);
-      hits.assign(end - q, WallContact{{}, {}, 0, 0, -1});
-      for (std::size_t k = q; k < end; ++k) {
-        const WallContactRecord& c = candidates[k];
-        if (k == q || c.wall != candidates[k - 1].wall) {  // one look-up per wall (a mesh may
-          found.clear();                                   // list many features)
-          const Wall& w = *walls[c.wall];
-          const auto listed = elements.find(c.wall, c.particle);
-          if (listed)
-            w.contacts_among(p.x[c.particle], p.radius[c.particle], 0.0, *listed, found);
-          else
-            w.contacts(p.x[c.particle], p.radius[c.particle], 0.0, found);
-        }
-        for (const auto& f : found)  // a full-scan wall's candidate (feature < 0) takes any
-          if (f.feature == c.feature || c.feature < 0) hits[k - q] = f;
-      }
-      for (std::size_t k = q; k < end; ++k) {
-        if (hits[k - q].overlap <= 0 || state.active[k]) continue;
-        const Wall& w = *walls[candidates[k].wall];
-        for (std::size_t j = q; j < end; ++j)
-          if (state.active[j] && hits[j - q].overlap <= 0 &&
-              candidates[j].wall == candidates[k].wall &&
-              w.continues(candidates[j].feature, hits[k - q].feature)) {
-            state.move(j, k);
-            break;
+    LookUp& look = scratch_[static_cast<std::size_t>(thread_id())];
+#pragma omp for schedule(dynamic, 1) nowait
+    for (std::size_t chunk = 0; chunk < nchunk; ++chunk) {
+      WallTally& mine = part[chunk];
+      mine.energy = {};
+      mine.force.assign(walls.size(), Vec3{});
+      mine.torque.assign(walls.size(), Vec3{});
+      mine.touching.clear();
+      mine.wear.clear();
+      mine.ended.clear();
+      mine.starts.clear();
+      mine.contacts.clear();
+      // the force of candidate q touching as `hit` (not touching: its state is cleared)
+      auto force = [&](std::size_t q, const WallContact& hit) {
+        const WallContactRecord& c = candidates[q];
+        const std::uint32_t i = c.particle;
+        Wall& w = *walls[c.wall];
+        if (hit.overlap <= 0) {
+          if (state.active[q]) {
+            if (record) mine.ended.push_back({i, c.wall, true, record->totals(state.at(q))});
+            state.clear(q);
           }
+          return;
+        }
+        if (cs && !state.active[q])
+          mine.starts.push_back({i, -1 - static_cast<std::int32_t>(c.wall)});
+        state.active[q] = 1;
+        const Vec3 nrm = hit.normal;
+        const double overlap = hit.overlap;
+        const double ri = p.radius[i] - overlap;
+        const Vec3 vwall = w.kinematics.velocity_at(hit.point);
+        const Vec3 vrel = p.v[i] - cross(p.w[i], ri * nrm) - vwall;
+        const double vn = dot(vrel, nrm);
+        ContactKinematics ck;
+        ck.dt = dt;
+        ck.normal = nrm;
+        ck.overlap = overlap;
+        ck.overlap_rate = -vn;
+        ck.tangential_velocity = vrel - vn * nrm;
+        ck.effective_radius = p.radius[i];
+        ck.effective_mass = p.mass[i];
+        if (rolling) {  // read by the rolling models only (as in the pair loop)
+          ck.relative_angular_velocity = p.w[i];
+          ck.effective_inertia = p.inertia[i];
+        }
+        const PairParameters& pp = materials.pair(p.material[i], w.material);
+        ContactForces out;
+        pipeline.evaluate(ck, pp, StateRef{&slots, q}, out);
+        const Vec3 fc = out.normal_force * nrm + out.tangential_force;
+        p.f[i] += fc;
+        p.t[i] += out.rolling_torque - ri * cross(nrm, out.tangential_force);
+        mine.force[c.wall] -= fc;
+        mine.torque[c.wall] -= cross(hit.point - w.kinematics.center, fc);
+        if (armed) {  // Love–Weber: a particle's slots are all in this thread's range
+          add_sym_outer(cs->moment[i], fc, hit.point - p.x[i], 1.0);
+          if (list)
+            mine.contacts.push_back({i, -1 - static_cast<std::int32_t>(c.wall), p.x[i], hit.point,
+                                     fc, out.normal_force});
+        }
+        mine.energy.add(out);
+        mine.energy.wall_work += dot(fc, vwall) * dt;  // power of the wall's force on the particle
+        if (w.tracks_wear() && hit.element >= 0)
+          mine.wear.push_back(
+              {c.wall, hit.element, out.normal_force, norm(ck.tangential_velocity) * dt});
+        WallContactRecord rec = c;
+        rec.feature = hit.feature;
+        rec.candidate = static_cast<std::uint32_t>(q);
+        mine.touching.push_back(rec);
+      };
+      auto& found = look.found;
+      auto& hits = look.hits;
+      std::size_t q = begin[chunk];
+      while (q < begin[chunk + 1]) {
+        // the candidates of one particle, [q, end): all are looked up first, so that a contact
+        // passing to an adjacent feature of the same wall can take over the old one's history
+        std::size_t end = q + 1;
+        while (end < begin[chunk + 1] && candidates[end].particle == candidates[q].particle) ++end;
+        // the particles near a wall lie scattered in the store: the fields of a particle a few
+        // candidates ahead are asked for now, to be at hand when its turn comes
+        prefetch_particle(p, candidates[std::min(q + kAhead, begin[chunk + 1] - 1)].particle);
+        hits.assign(end - q, WallContact{{}, {}, 0, 0, -1});
+        for (std::size_t k = q; k < end; ++k) {
+          const WallContactRecord& c = candidates[k];
+          if (k == q || c.wall != candidates[k - 1].wall) {  // one look-up per wall (a mesh may
+            found.clear();                                   // list many features)
+            const Wall& w = *walls[c.wall];
+            const auto listed = elements.find(c.wall, c.particle);
+            if (listed)
+              w.contacts_among(p.x[c.particle], p.radius[c.particle], 0.0, *listed, found);
+            else
+              w.contacts(p.x[c.particle], p.radius[c.particle], 0.0, found);
+          }
+          for (const auto& f : found)  // a full-scan wall's candidate (feature < 0) takes any
+            if (f.feature == c.feature || c.feature < 0) hits[k - q] = f;
+        }
+        for (std::size_t k = q; k < end; ++k) {
+          if (hits[k - q].overlap <= 0 || state.active[k]) continue;
+          const Wall& w = *walls[candidates[k].wall];
+          for (std::size_t j = q; j < end; ++j)
+            if (state.active[j] && hits[j - q].overlap <= 0 &&
+                candidates[j].wall == candidates[k].wall &&
+                w.continues(candidates[j].feature, hits[k - q].feature)) {
+              state.move(j, k);
+              break;
+            }
+        }
+        for (std::size_t k = q; k < end; ++k) force(k, hits[k - q]);
+        q = end;
       }
-      for (std::size_t k = q; k < end; ++k) force(k, hits[k - q]);
-      q = end;
     }
   }
   touching.clear();
-  for (const auto& mine : std::span(part.data(), static_cast<std::size_t>(nt))) {
+  for (const auto& mine : std::span(part.data(), nchunk)) {
     for (std::size_t k = 0; k < walls.size(); ++k) {
       walls[k]->force += mine.force[k];
       walls[k]->torque += mine.torque[k];

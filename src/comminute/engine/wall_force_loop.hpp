@@ -1,10 +1,14 @@
 #pragma once
 // The particle–wall force loop over the candidates of the pair tracker. Candidates are sorted by
-// particle, so splitting them at particle boundaries gives each thread its own particles; wall
-// forces and tallies are summed per thread and combined in thread order (reproducible). A
-// contact that moves to an adjacent feature of the same wall in one step (a sphere rolling from one
-// triangle of a mesh onto the next: Wall::continues) keeps its history (tangential spring), and
-// sliding on a wall that tracks wear is reported to it after the loop, in thread order.
+// particle and cut into chunks of about 256 at particle boundaries, so a chunk's particles are its
+// own. Only particles near a wall have candidates, and touching ones cost several times the
+// others, so a split by particle index or candidate count leaves one thread with more work: the
+// threads take chunks as they come free (dynamic schedule). Wall forces and tallies are summed per
+// chunk and combined in chunk order, so the result depends neither on which thread took which
+// chunk nor on the number of threads. A contact that moves to an adjacent feature of the same
+// wall in one step (a sphere rolling from one triangle of a mesh onto the next: Wall::continues)
+// keeps its history (tangential spring), and sliding on a wall that tracks wear is reported to it
+// after the loop, in chunk order.
 #include <memory>
 #include <vector>
 
@@ -49,10 +53,13 @@ class WallForceLoop {
     std::vector<EndedContact> ended;
     std::vector<ContactStart> starts;
     std::vector<ContactRecord> contacts;
-    std::vector<WallContact> found, hits;  // scratch of the look-up of one particle's candidates
   };
-  std::vector<WallTally> parts_;
-  std::vector<std::size_t> begin_;  // the threads' first candidates
+  struct LookUp {  // one thread's scratch for the look-up of one particle's candidates
+    std::vector<WallContact> found, hits;
+  };
+  std::vector<WallTally> parts_;    // per chunk of candidates
+  std::vector<LookUp> scratch_;     // per thread
+  std::vector<std::size_t> begin_;  // the chunks' first candidates
 };
 
 }  // namespace comminute

@@ -2,8 +2,9 @@
 // The loop of one step over a range of bonds, shared by the bond laws: each law's update_range
 // instantiates it with its own class, whose advance() (what its update() does) is inlined into
 // the loop instead of one virtual call per bond. Per bond: the motion of its two particles, the
-// law's update, the force and the two torques the particles receive (added to them afterwards, per
-// particle in bond order, by BondsModule).
+// law's update, the force and the two torques the particles receive, added straight onto them
+// (deliver); on several threads a particle already loaded by an earlier block of bonds takes this
+// one's load after the threads join, in bond order (BondsModule).
 #include <algorithm>
 #include <cmath>
 #include <cstddef>

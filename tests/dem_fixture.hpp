@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "comminute/engine/simulation.hpp"
+#include "comminute/geometry/box_wall.hpp"
 
 namespace comminute::testing {
 
@@ -50,6 +51,13 @@ inline std::unique_ptr<Simulation> make_simulation(const DemSetup& s) {
   if (s.cohesion > 0) sim->cohesion = CohesionRegistry::create("sjkr", contact.root());
   sim->gravity = s.gravity;
   return sim;
+}
+
+// A box from lo to hi without its top face (+z open): a bin for beds that settle or are pressed.
+inline Wall& add_open_top_box(Simulation& sim, Vec3 lo, Vec3 hi) {
+  sim.walls.push_back(std::make_unique<BoxWall>(
+      lo, hi, std::array<bool, 6>{false, false, false, false, false, true}));
+  return *sim.walls.back();
 }
 
 inline std::uint64_t add_sphere(Simulation& sim, Vec3 x, double r, Vec3 v = {}, Vec3 w = {}) {

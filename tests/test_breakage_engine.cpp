@@ -106,9 +106,7 @@ const CompressionRun& compression() {
     const double d = 0.003, a = 0.0031, L = 6 * a;
     lattice(*sim, d, a, L, 0.0, rng);
     const double v_platen = 2.0;  // m/s
-    sim->walls.push_back(
-        std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{L, L, 2 * L},
-                                  std::array<bool, 6>{false, false, false, false, false, true}));
+    add_open_top_box(*sim, Vec3{0, 0, 0}, Vec3{L, L, 2 * L});
     auto platen = std::make_unique<PlaneWall>(Vec3{0, 0, L + 0.0001}, Vec3{0, 0, -1});
     platen->kinematics.velocity = {0, 0, -v_platen};
     sim->walls.push_back(std::move(platen));

@@ -12,7 +12,6 @@
 
 #include "breakage_engine_fixture.hpp"
 #include "comminute/core/rng.hpp"
-#include "comminute/geometry/box_wall.hpp"
 #include "dem_fixture.hpp"
 #include "restart_twin.hpp"
 
@@ -39,9 +38,7 @@ std::unique_ptr<Simulation> shuffled_bed(int sort_every) {
     add_sphere(*sim, {(i + 0.5) * a + 0.05 * r, (j + 0.5) * a + 0.05 * r, (k + 0.5) * a + 0.05 * r},
                r * rng.uniform(0.95, 1.0), {rng.uniform(-0.01, 0.01), rng.uniform(-0.01, 0.01), 0});
   }
-  sim->walls.push_back(
-      std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{nx * a + 0.1 * r, nx * a + 0.1 * r, 1.0},
-                                std::array<bool, 6>{false, false, false, false, false, true}));
+  add_open_top_box(*sim, Vec3{0, 0, 0}, Vec3{nx * a + 0.1 * r, nx * a + 0.1 * r, 1.0});
   sim->options.skin = 0.02 * r;
   sim->options.sort_every = sort_every;
   sim->dt = 2e-6;

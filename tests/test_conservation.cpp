@@ -110,9 +110,7 @@ TEST(Conservation, SettledColumnWeighsOnTheFloor) {
   slick.friction = 0.0;
   sim->materials.set_pair(0, 1, slick);
   const double L = 0.02;
-  sim->walls.push_back(
-      std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{L, L, 0.1},
-                                std::array<bool, 6>{false, false, false, false, false, true}));
+  add_open_top_box(*sim, Vec3{0, 0, 0}, Vec3{L, L, 0.1});
   sim->walls[0]->material = 1;
   scatter(*sim, 150, 0.0015, L, 0.0, 3);
   sim->dt = 5e-6;

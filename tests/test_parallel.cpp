@@ -9,7 +9,6 @@
 #include "comminute/core/parallel.hpp"
 #include "comminute/core/rng.hpp"
 #include "comminute/engine/contact_pipeline.hpp"
-#include "comminute/geometry/box_wall.hpp"
 #include "dem_fixture.hpp"
 
 using namespace comminute;
@@ -22,9 +21,7 @@ std::unique_ptr<Simulation> lattice_bed(int threads, std::unique_ptr<Module> mod
   auto sim = make_simulation(frictional_rolling_setup());
   const double r = 0.001, a = 2.05 * r;
   const int nx = 20;
-  sim->walls.push_back(
-      std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{nx * a, nx * a, 1.0},
-                                std::array<bool, 6>{false, false, false, false, false, true}));
+  add_open_top_box(*sim, Vec3{0, 0, 0}, Vec3{nx * a, nx * a, 1.0});
   Rng rng(9);
   for (int k = 0; k < 13; ++k)
     for (int j = 0; j < nx; ++j)
@@ -134,9 +131,7 @@ TEST(Parallel, BreakageRepeatsBitForBitOnTwoThreads) {
     Rng rng(11);
     const double d = 0.003, a = 0.995 * d, L = 21 * a;
     lattice(*sim, d, a, L, 1.0, rng);
-    sim->walls.push_back(
-        std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{L, L, 2 * L},
-                                  std::array<bool, 6>{false, false, false, false, false, true}));
+    add_open_top_box(*sim, Vec3{0, 0, 0}, Vec3{L, L, 2 * L});
     auto platen = std::make_unique<PlaneWall>(Vec3{0, 0, L}, Vec3{0, 0, -1});
     platen->kinematics.velocity = {0, 0, -1.0};
     sim->walls.push_back(std::move(platen));

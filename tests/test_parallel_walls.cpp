@@ -6,7 +6,6 @@
 #include <omp.h>
 
 #include "comminute/core/rng.hpp"
-#include "comminute/geometry/box_wall.hpp"
 #include "dem_fixture.hpp"
 
 using namespace comminute;
@@ -29,9 +28,7 @@ WallRun floor_layer(int threads) {
   auto sim = make_simulation(frictional_rolling_setup());
   const double r = 0.001, a = 2.1 * r;
   const int nx = 64;
-  sim->walls.push_back(
-      std::make_unique<BoxWall>(Vec3{0, 0, 0}, Vec3{nx * a, nx * a, 1.0},
-                                std::array<bool, 6>{false, false, false, false, false, true}));
+  add_open_top_box(*sim, Vec3{0, 0, 0}, Vec3{nx * a, nx * a, 1.0});
   Rng rng(21);
   for (int j = 0; j < nx; ++j)
     for (int i = 0; i < nx; ++i)

@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstring>
+#include <limits>
 
 #include "comminute/core/error.hpp"
 #include "comminute/core/parallel.hpp"
@@ -211,42 +213,84 @@ void carry_column(std::vector<T>& data, SwapRule rule, const std::vector<std::ui
 // breakage: pairs of removed particles dropped, order kept, new pairs appended): a pass in
 // rising k then reads each old value before it is overwritten.
 bool gathers_forward(const std::vector<std::uint32_t>& from) {
-  for (std::size_t k = 0; k < from.size(); ++k)
-    if (from[k] != ContactStateStore::none && from[k] < k) return false;
-  return true;
+  const auto n = static_cast<std::ptrdiff_t>(from.size());
+  bool forward = true;
+#pragma omp parallel for schedule(static) reduction(&& : forward) if (n >= static_cast <std::ptrdiff_t>(kThreadedCarry))
+  for (std::ptrdiff_t k = 0; k < n; ++k)
+    forward =
+        forward && (from[k] == ContactStateStore::none || from[k] >= static_cast<std::size_t>(k));
+  return forward;
 }
 
-// Column c of the new list: contact k takes old contact from[k] (none: fresh). A forward gather
-// within the column's capacity moves the values in place, a run of consecutive sources at a time
-// (memmove), so no second column is allocated or kept. Any other gather copies into a new column
-// (reserved 1/8 larger, so that the next lists are gathered in place) and frees the old one.
-template <class T>
-void gather_column(std::vector<T>& data, const std::vector<std::uint32_t>& from, T fresh,
-                   bool forward) {
+// Contacts [to, to + length) of a forward gather take old contacts [from, from + length)
+// (from == none: fresh ones).
+struct GatherRun {
+  std::size_t to, from, length;
+};
+
+// The runs of contacts [k0, k1), each cut where its sources reach `limit`.
+std::vector<GatherRun> forward_runs(const std::vector<std::uint32_t>& from, std::size_t k0,
+                                    std::size_t k1, std::size_t limit) {
   constexpr std::uint32_t none = ContactStateStore::none;
-  const std::size_t n = from.size();
-  if (forward && n <= data.capacity()) {
-    if (n > data.size()) data.resize(n, fresh);  // within the capacity: no copy
-    std::size_t k = 0;
-    while (k < n) {
-      if (from[k] == none) {
-        data[k++] = fresh;
-        continue;
-      }
-      std::size_t e = k + 1;  // [k, e): consecutive sources
-      while (e < n && from[e] != none && from[e] == from[e - 1] + 1) ++e;
-      if (from[k] != k) std::memmove(&data[k], &data[from[k]], (e - k) * sizeof(T));
-      k = e;
+  std::vector<GatherRun> runs;
+  for (std::size_t k = k0; k < k1;) {
+    std::size_t e = k + 1;
+    if (from[k] == none) {
+      while (e < k1 && from[e] == none) ++e;
+    } else {
+      const bool above = from[k] >= limit;
+      while (e < k1 && from[e] != none && from[e] == from[e - 1] + 1 && (from[e] >= limit) == above)
+        ++e;
     }
-    data.resize(n);
-    return;
+    runs.push_back({k, from[k], e - k});
+    k = e;
   }
+  return runs;
+}
+
+// Appends to `saved` the old values the runs read at or above `limit` (before they are
+// overwritten).
+template <class T>
+void save_runs(const std::vector<T>& data, const std::vector<GatherRun>& runs, std::size_t limit,
+               std::vector<std::byte>& saved) {
+  for (const GatherRun& r : runs)
+    if (r.from != ContactStateStore::none && r.from >= limit) {
+      const std::size_t at = saved.size();
+      saved.resize(at + r.length * sizeof(T));
+      std::memcpy(&saved[at], &data[r.from], r.length * sizeof(T));
+    }
+}
+
+// Moves the runs in rising order (a run's sources lie at or after its contacts): those read at or
+// above `limit` from `saved`, in order.
+template <class T>
+void move_runs(std::vector<T>& data, const std::vector<GatherRun>& runs, std::size_t limit,
+               const std::vector<std::byte>& saved) {
+  std::size_t at = 0;
+  for (const GatherRun& r : runs) {
+    if (r.from == ContactStateStore::none) {
+      std::fill_n(data.begin() + static_cast<std::ptrdiff_t>(r.to), r.length, T{});
+    } else if (r.from >= limit) {
+      std::memcpy(&data[r.to], &saved[at], r.length * sizeof(T));
+      at += r.length * sizeof(T);
+    } else if (r.from != r.to) {
+      std::memmove(&data[r.to], &data[r.from], r.length * sizeof(T));
+    }
+  }
+}
+
+// Contact k of the new column takes old contact from[k] (none: fresh), copied into a new column
+// (reserved 1/8 larger, so that the next lists are gathered in place); the old one is freed.
+template <class T>
+void gather_copy(std::vector<T>& data, const std::vector<std::uint32_t>& from) {
+  const std::size_t n = from.size();
   std::vector<T> out;
   out.reserve(n + n / 8);
   out.resize(n);
-  const int nt = n >= 16384 ? max_threads() : 1;
+  const int nt = n >= kThreadedCarry ? max_threads() : 1;
 #pragma omp parallel for schedule(static) num_threads(nt)
-  for (std::size_t k = 0; k < n; ++k) out[k] = from[k] == none ? fresh : data[from[k]];
+  for (std::size_t k = 0; k < n; ++k)
+    out[k] = from[k] == ContactStateStore::none ? T{} : data[from[k]];
   data.swap(out);
 }
 }  // namespace
@@ -268,12 +312,54 @@ void ContactStateStore::carry(const std::vector<std::uint32_t>& from,
   refresh();
 }
 
+// A forward gather within a column's capacity moves the values in place, a run of consecutive
+// sources at a time (memmove), so no second column is allocated or kept; any other gather copies
+// (gather_copy). In place, thread t of nt takes contacts [n t / nt, n (t + 1) / nt) of every such
+// column: it first saves the old values it reads in a later thread's range (at or above its own
+// range's end), then, once all have, moves its runs; the result is that of one thread.
 void ContactStateStore::gather(const std::vector<std::uint32_t>& from) {
+  const std::size_t n = from.size();
   const bool forward = gathers_forward(from);
-  for (auto& c : vec3_) gather_column(c.data, from, Vec3{}, forward);
-  for (auto& c : f32_) gather_column(c.data, from, 0.0f, forward);
-  for (auto& c : f64_) gather_column(c.data, from, 0.0, forward);
-  gather_column(active, from, std::uint8_t{0}, forward);
+  auto each = [this](auto&& f) {
+    for (auto& c : vec3_) f(c.data);
+    for (auto& c : f32_) f(c.data);
+    for (auto& c : f64_) f(c.data);
+    f(active);
+  };
+  std::vector<std::uint8_t> in_place;  // per column, in the order of each()
+  each([&](auto& data) {
+    in_place.push_back(forward && n <= data.capacity());
+    if (in_place.back() && n > data.size()) data.resize(n);  // within the capacity: no copy
+  });
+  const int nt = n >= kThreadedCarry ? max_threads() : 1;
+  if (std::find(in_place.begin(), in_place.end(), 1) != in_place.end()) {
+#pragma omp parallel num_threads(nt)
+    {
+      const auto t = static_cast<std::size_t>(thread_id()), m = static_cast<std::size_t>(nt);
+      const std::size_t k1 = n * (t + 1) / m;
+      const std::size_t limit = t + 1 < m ? k1 : std::numeric_limits<std::size_t>::max();
+      const std::vector<GatherRun> runs = forward_runs(from, n * t / m, k1, limit);
+      std::vector<std::vector<std::byte>> saved(in_place.size());
+      std::size_t c = 0;
+      each([&](auto& data) {
+        if (in_place[c]) save_runs(data, runs, limit, saved[c]);
+        ++c;
+      });
+#pragma omp barrier
+      c = 0;
+      each([&](auto& data) {
+        if (in_place[c]) move_runs(data, runs, limit, saved[c]);
+        ++c;
+      });
+    }
+  }
+  std::size_t c = 0;
+  each([&](auto& data) {
+    if (in_place[c++])
+      data.resize(n);
+    else
+      gather_copy(data, from);
+  });
   refresh();
 }
 

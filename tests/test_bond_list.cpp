@@ -62,15 +62,15 @@ TEST(BondList, FollowsParticlesThroughPermutationAndCompaction) {
   p.compact();
   const auto lost = b.locate(p);
   ASSERT_EQ(lost.size(), 2u);
-  EXPECT_EQ(b.state.shape[lost[0]].length0, 2.0);
-  EXPECT_EQ(b.state.shape[lost[1]].length0, 3.0);
+  EXPECT_EQ(b.state.length0[lost[0]], 2.0);
+  EXPECT_EQ(b.state.length0[lost[1]], 3.0);
   std::vector<std::uint8_t> gone(b.size(), 0);
   for (auto k : lost) gone[k] = 1;
   b.remove(gone);
   ASSERT_EQ(b.size(), 3u);
-  EXPECT_EQ(b.state.shape[0].length0, 1.0);
-  EXPECT_EQ(b.state.shape[1].length0, 4.0);
-  EXPECT_EQ(b.state.shape[2].length0, 5.0);
+  EXPECT_EQ(b.state.length0[0], 1.0);
+  EXPECT_EQ(b.state.length0[1], 4.0);
+  EXPECT_EQ(b.state.length0[2], 5.0);
   expect_slots_match_ids(b, p);
 }
 

@@ -260,7 +260,7 @@ TEST(BondsEngine, CheckpointRestartIsBitForBit) {
   EXPECT_EQ(m1->failures().size(), m2->failures().size());
   EXPECT_EQ(straight->ledger.bond_dissipated, resumed->ledger.bond_dissipated);
   for (std::size_t b = 0; b < m1->bonds().size(); ++b) {
-    EXPECT_EQ(m1->bonds().state.live[b].moment, m2->bonds().state.live[b].moment);
+    EXPECT_EQ(m1->bonds().state.moment(b), m2->bonds().state.moment(b));
     EXPECT_EQ(m1->bonds().state.rest[b].damage, m2->bonds().state.rest[b].damage);
   }
 }

@@ -60,7 +60,7 @@ struct BondStep {
   const double* radius = nullptr;
   const std::uint32_t* slot_i = nullptr;
   const std::uint32_t* slot_j = nullptr;
-  BondStates* state = nullptr;   // by bond (live, shape and rest records)
+  BondStates* state = nullptr;   // by bond (live and shape arrays, rest records)
   std::uint8_t* flag = nullptr;  // in: 1 = gone (its particle was removed; skipped), else 0;
                                  // out: 2 = failed in this step
   double dt = 0;

@@ -3,8 +3,8 @@
 // instantiates it with its own class, whose advance() (what its update() does) is inlined into
 // the loop instead of one virtual call per bond. Per bond: the motion of its two particles, the
 // law's update, the force and the two torques the particles receive, added straight onto them
-// (deliver); on several threads a particle already loaded by an earlier block of bonds takes this
-// one's load after the threads join, in bond order (BondsModule).
+// (BondLoadDelivery); on several threads a particle already loaded by an earlier block of bonds
+// takes this one's load after the threads join, in bond order (BondsModule).
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -25,7 +25,7 @@ inline Vec3 bond_point(const BondStep& st, std::size_t b) {
   const std::uint32_t i = st.slot_i[b], j = st.slot_j[b];
   const Vec3 d = st.x[j] - st.x[i];
   const double length = norm(d);
-  const Vec3 n = length > 0 ? d * (1.0 / length) : st.state->live[b].normal;
+  const Vec3 n = length > 0 ? d * (1.0 / length) : st.state->normal(b);
   return bond_point(st.x[i], st.radius[i], st.radius[j], n, length);
 }
 
@@ -66,46 +66,80 @@ inline BondKinematics bond_kinematics(const BondStep& st, std::uint32_t i, std::
                          st.w[j], last_normal, st.dt);
 }
 
-// Hands bond b's load to its particles: the force on j (i gets −force) and the torques, into the
-// step's arrays or, when the step has them, straight onto the particles (BondStep).
-inline void deliver(const BondStep& st, std::size_t b, const Vec3& force, const Vec3& torque_i,
-                    const Vec3& torque_j) {
-  if (st.particle_force) {
-    const std::uint32_t i = st.slot_i[b], j = st.slot_j[b];
-    const std::uint8_t wait = st.defer ? st.defer[b] : 0;
-    if (wait) {  // added after the threads join, from its place among the waiting bonds
-      const std::uint32_t* at = std::lower_bound(st.deferred, st.deferred + st.n_deferred, b);
-      const auto k = static_cast<std::size_t>(at - st.deferred);
-      st.force[k] = force;
-      st.torque_i[k] = torque_i;
-      st.torque_j[k] = torque_j;
+// Hands the loads of a range of bonds, bond by bond in bond order, to their particles: the force
+// on j (i gets −force) and the torques, into the step's arrays or, when the step has them, straight
+// onto the particles (BondStep). Particle i's force and torque stay in registers over consecutive
+// bonds of the same i (bonds made from the pairs in id order come grouped by i), as the pair loop
+// keeps them over a particle's contacts: the same sums in the same order as adding to the
+// particle bond by bond. They are written back when another particle's turn comes, before the
+// held particle is loaded as a bond's j or as a waiting i, and at the end (destructor).
+class BondLoadDelivery {
+ public:
+  explicit BondLoadDelivery(const BondStep& st) : st_(st) {}
+  BondLoadDelivery(const BondLoadDelivery&) = delete;
+  BondLoadDelivery& operator=(const BondLoadDelivery&) = delete;
+  ~BondLoadDelivery() { release(); }
+
+  void operator()(std::size_t b, const Vec3& force, const Vec3& torque_i, const Vec3& torque_j) {
+    if (!st_.particle_force) {
+      st_.force[b] = force;
+      st_.torque_i[b] = torque_i;
+      st_.torque_j[b] = torque_j;
+      return;
     }
+    const std::uint32_t i = st_.slot_i[b], j = st_.slot_j[b];
+    const std::uint8_t wait = st_.defer ? st_.defer[b] : 0;
+    if (wait) {  // added after the threads join, from its place among the waiting bonds
+      const std::uint32_t* at = std::lower_bound(st_.deferred, st_.deferred + st_.n_deferred, b);
+      const auto k = static_cast<std::size_t>(at - st_.deferred);
+      st_.force[k] = force;
+      st_.torque_i[k] = torque_i;
+      st_.torque_j[k] = torque_j;
+    }
+    if (j == held_) release();
     if (!(wait & 1u)) {
-      st.particle_force[i] -= force;
-      st.particle_torque[i] -= torque_i;
+      if (i != held_) {
+        release();
+        held_ = i;
+        fi_ = st_.particle_force[i];
+        ti_ = st_.particle_torque[i];
+      }
+      fi_ -= force;
+      ti_ -= torque_i;
     }
     if (!(wait & 2u)) {
-      st.particle_force[j] += force;
-      st.particle_torque[j] += torque_j;
+      st_.particle_force[j] += force;
+      st_.particle_torque[j] += torque_j;
     }
-    return;
   }
-  st.force[b] = force;
-  st.torque_i[b] = torque_i;
-  st.torque_j[b] = torque_j;
-}
 
-// A gone bond (flag 1: a particle of it was removed, its slots may point nowhere) carries nothing.
-inline void deliver_nothing(const BondStep& st, std::size_t b) {
-  if (!st.particle_force) st.force[b] = st.torque_i[b] = st.torque_j[b] = Vec3{};
-}
+  // A gone bond (flag 1: a particle of it was removed, its slots may point nowhere) carries
+  // nothing.
+  void nothing(std::size_t b) {
+    if (!st_.particle_force) st_.force[b] = st_.torque_i[b] = st_.torque_j[b] = Vec3{};
+  }
+
+ private:
+  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+  void release() {
+    if (held_ == kNone) return;
+    st_.particle_force[held_] = fi_;
+    st_.particle_torque[held_] = ti_;
+    held_ = kNone;
+  }
+
+  const BondStep& st_;
+  std::uint32_t held_ = kNone;  // the particle whose force and torque are held
+  Vec3 fi_, ti_;
+};
 
 template <class Law>
 BondStepSums update_bonds(const Law& law, const BondStep& st, std::size_t begin, std::size_t end) {
   BondStepSums sums;
+  BondLoadDelivery deliver(st);
   for (std::size_t b = begin; b < end; ++b) {
     if (st.flag[b]) {
-      deliver_nothing(st, b);
+      deliver.nothing(b);
       continue;
     }
     BondState s = st.state->get(b);  // the whole record: any law's fields
@@ -117,11 +151,11 @@ BondStepSums update_bonds(const Law& law, const BondStep& st, std::size_t begin,
     if (s.failed != FailureMode::none) {
       st.flag[b] = 2;
       ++sums.failed;
-      deliver(st, b, {}, {}, {});  // zeros, as the fold of the arrays adds them
+      deliver(b, {}, {}, {});  // zeros, as the fold of the arrays adds them
       continue;
     }
     sums.elastic += s.strain_energy;
-    deliver(st, b, load.force, cross(k.lever_i, load.force) + load.moment,
+    deliver(b, load.force, cross(k.lever_i, load.force) + load.moment,
             cross(k.lever_j, load.force) + load.moment);
   }
   return sums;

@@ -285,7 +285,7 @@ void BondsModule::apply(Simulation& sim) {
   if (failed == 0) return;
   for (std::size_t b = 0; b < n_bonds; ++b) {
     if (gone_[b] != 2) continue;
-    const FailureMode mode = bonds_.state.shape[b].failed;
+    const FailureMode mode = bonds_.state.failed[b];
     fail(sim, b, mode == FailureMode::tensile ? FailureCause::tensile : FailureCause::shear,
          bond_point(st, b));
   }

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include "comminute/bonds/bond_law.hpp"
 #include "comminute/bonds/bond_step.hpp"
@@ -148,55 +150,91 @@ class ParallelBond final : public BondLaw {
   double per_kn_, per_ks_;  // 1/k̄n, 1/k̄s (m/Pa)
 };
 
-// update_range() runs the bonds in batches of structure-of-arrays: the particles' and the bonds'
-// values are gathered bond by bond, the arithmetic (bond_kinematics, advance) runs as one loop over
-// the batch that the compiler vectorises, and the results go back bond by bond, in bond order. The
-// same operations in the same order as update(): vector lanes round as scalars do (no fused
-// multiply-add, no reassociation), so the batch equals one update() per bond bit for bit.
+// update_range() runs the bonds in batches: the particles' values are gathered bond by bond into
+// arrays, the arithmetic (bond_kinematics, advance) runs as one loop over the batch that the
+// compiler vectorises, reading and writing the bonds' states in place (BondStates keeps them by
+// component), and the loads go to the particles bond by bond, in bond order. The same operations
+// in the same order as update(): vector lanes round as scalars do (no fused multiply-add, no
+// reassociation), so the batch equals one update() per bond bit for bit.
 constexpr std::size_t kBatch = 32;
-constexpr std::size_t kAhead = 16;  // bonds ahead whose memory is fetched during the gather
+constexpr std::size_t kAhead = 16;  // bonds ahead whose particles are fetched during the gather
 
 struct Batch {
-  // in: x_j − x_i, radii, v_j − v_i, spins, and the bond's stored state
+  // in: x_j − x_i, radii, v_j − v_i, spins, and whether the bond's state stays as it is (1: gone
+  // or failed before) or not (0)
   double dx[kBatch], dy[kBatch], dz[kBatch], ri[kBatch], rj[kBatch];
   double dvx[kBatch], dvy[kBatch], dvz[kBatch];
   double wix[kBatch], wiy[kBatch], wiz[kBatch], wjx[kBatch], wjy[kBatch], wjz[kBatch];
-  double nx[kBatch], ny[kBatch], nz[kBatch];  // in: last normal; out: the normal now
-  double fx[kBatch], fy[kBatch], fz[kBatch];  // stored shear force, in and out
-  double mx[kBatch], my[kBatch], mz[kBatch];  // stored moment, in and out
-  double length0[kBatch], radius[kBatch], tensile[kBatch], shear[kBatch];
-  // out: the normal force, strain energy, failure (1), the load on j and the two torques
-  double tension[kBatch], energy[kBatch], fails[kBatch];
+  double keep[kBatch];
+  // out: the normal force, failure (1), the load on j and the two torques
+  double tension[kBatch], fails[kBatch];
   double lx[kBatch], ly[kBatch], lz[kBatch];     // force on j
   double tix[kBatch], tiy[kBatch], tiz[kBatch];  // torque_i
   double tjx[kBatch], tjy[kBatch], tjz[kBatch];  // torque_j
 };
 
-// The arithmetic of a batch of n bonds (vectorised; an AVX2 version besides the baseline one,
-// chosen once by the processor: the same operations, so the same results).
+// Bond b's place in the state's arrays, by component (restrict: apart from each other and from
+// the batch, so that the loop over the batch vectorises without run-time checks of overlap).
+struct StateColumns {
+  double* __restrict nx, * __restrict ny, * __restrict nz;
+  double* __restrict fx, * __restrict fy, * __restrict fz;
+  double* __restrict mx, * __restrict my, * __restrict mz;
+  double* __restrict energy;
+  const double* __restrict length0, * __restrict radius, * __restrict tensile, * __restrict shear;
+};
+
+StateColumns columns_at(BondStates& s, std::size_t b) {
+  return {s.nx.data() + b,
+          s.ny.data() + b,
+          s.nz.data() + b,
+          s.fx.data() + b,
+          s.fy.data() + b,
+          s.fz.data() + b,
+          s.mx.data() + b,
+          s.my.data() + b,
+          s.mz.data() + b,
+          s.strain_energy.data() + b,
+          s.length0.data() + b,
+          s.radius.data() + b,
+          s.tensile_strength.data() + b,
+          s.shear_strength.data() + b};
+}
+
+// The arithmetic of bonds b0 .. b0 + n (vectorised; AVX-512 and AVX2 versions besides the baseline
+// one, chosen once by the processor: the same operations, so the same results). A bond that keeps
+// its state has it written back unchanged.
 #if defined(COMMINUTE_AVX2_CLONES)
-#define COMMINUTE_VECTOR_CLONES [[gnu::target_clones("avx2", "default")]]
+#define COMMINUTE_VECTOR_CLONES [[gnu::target_clones("avx512f", "avx2", "default")]]
 #else
 #define COMMINUTE_VECTOR_CLONES
 #endif
-COMMINUTE_VECTOR_CLONES void advance_batch(const ParallelBond& law, Batch& t, std::size_t n,
-                                           double dt) {
+COMMINUTE_VECTOR_CLONES void advance_batch(const ParallelBond& bond_law, Batch& __restrict t,
+                                           StateColumns c, std::size_t n, double dt) {
+  const ParallelBond law = bond_law;  // its constants in a copy of its own: apart from the arrays
+  auto [nx, ny, nz, fx, fy, fz, mx, my, mz, energy, length0, radius, tensile, shear] = c;
   for (std::size_t k = 0; k < n; ++k) {
-    const Vec3 last{t.nx[k], t.ny[k], t.nz[k]};
+    const Vec3 last{nx[k], ny[k], nz[k]};
     const BondKinematics km = bond_kinematics(
         {t.dx[k], t.dy[k], t.dz[k]}, t.ri[k], t.rj[k], {t.dvx[k], t.dvy[k], t.dvz[k]},
         {t.wix[k], t.wiy[k], t.wiz[k]}, {t.wjx[k], t.wjy[k], t.wjz[k]}, last, dt);
-    Vec3 shear_force{t.fx[k], t.fy[k], t.fz[k]}, moment{t.mx[k], t.my[k], t.mz[k]};
-    double tension = 0, energy = 0, fails = 0;
-    law.advance(last, t.radius[k], t.length0[k], t.tensile[k], t.shear[k], km.m, shear_force,
-                moment, tension, energy, fails);
+    const Vec3 shear_force0{fx[k], fy[k], fz[k]}, moment0{mx[k], my[k], mz[k]};
+    const double strain0 = energy[k];
+    Vec3 shear_force = shear_force0, moment = moment0;
+    double tension = 0, strain = 0, fails = 0;
+    law.advance(last, radius[k], length0[k], tensile[k], shear[k], km.m, shear_force, moment,
+                tension, strain, fails);
     const Vec3& n_now = km.m.normal;
     const Vec3 load = -tension * n_now + shear_force;
     const Vec3 ti = cross(km.lever_i, load) + moment, tj = cross(km.lever_j, load) + moment;
-    t.nx[k] = n_now.x, t.ny[k] = n_now.y, t.nz[k] = n_now.z;
-    t.fx[k] = shear_force.x, t.fy[k] = shear_force.y, t.fz[k] = shear_force.z;
-    t.mx[k] = moment.x, t.my[k] = moment.y, t.mz[k] = moment.z;
-    t.tension[k] = tension, t.energy[k] = energy, t.fails[k] = fails;
+    const bool keep = t.keep[k] != 0;
+    nx[k] = keep ? last.x : n_now.x, ny[k] = keep ? last.y : n_now.y;
+    nz[k] = keep ? last.z : n_now.z;
+    fx[k] = keep ? shear_force0.x : shear_force.x, fy[k] = keep ? shear_force0.y : shear_force.y;
+    fz[k] = keep ? shear_force0.z : shear_force.z;
+    mx[k] = keep ? moment0.x : moment.x, my[k] = keep ? moment0.y : moment.y;
+    mz[k] = keep ? moment0.z : moment.z;
+    energy[k] = keep ? strain0 : strain;
+    t.tension[k] = tension, t.fails[k] = fails;
     t.lx[k] = load.x, t.ly[k] = load.y, t.lz[k] = load.z;
     t.tix[k] = ti.x, t.tiy[k] = ti.y, t.tiz[k] = ti.z;
     t.tjx[k] = tj.x, t.tjy[k] = tj.y, t.tjz[k] = tj.z;
@@ -207,26 +245,26 @@ BondStepSums ParallelBond::update_range(const BondStep& st, std::size_t begin,
                                         std::size_t end) const {
   BondStepSums sums;
   Batch t;
-  BondLive* const live = st.state->live.data();
-  const BondShape* const shape = st.state->shape.data();
+  BondStates& state = *st.state;
+  BondLoadDelivery deliver(st);
   for (std::size_t b0 = begin; b0 < end; b0 += kBatch) {
     const std::size_t n = std::min(kBatch, end - b0);
+    // the states of the next batch, one cache line of eight bonds at a time: many arrays are
+    // streamed at once, more than the processor follows by itself
+    for (std::size_t b = b0 + kBatch; b < std::min(b0 + 2 * kBatch, end); b += 8)
+      for (const std::vector<double>* column : std::as_const(state).columns())
+        __builtin_prefetch(column->data() + b);
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t b = b0 + k;
-      if (b + kAhead < end) {  // the live and shape records and particles of a bond further on
-        const char* ahead = reinterpret_cast<const char*>(live + b + kAhead);
-        __builtin_prefetch(ahead, 1);
-        __builtin_prefetch(ahead + 64, 1);
-        __builtin_prefetch(shape + b + kAhead);
+      if (b + kAhead < end) {  // the particles of a bond further on
         const std::uint32_t i = st.slot_i[b + kAhead], j = st.slot_j[b + kAhead];
         __builtin_prefetch(st.x + i), __builtin_prefetch(st.x + j);
         __builtin_prefetch(st.v + i), __builtin_prefetch(st.v + j);
         __builtin_prefetch(st.w + i), __builtin_prefetch(st.w + j);
       }
-      const BondLive& s = live[b];
-      const BondShape& h = shape[b];
-      Vec3 d = s.normal * h.length0, dv, wi, wj;
-      double ri = h.radius, rj = h.radius;  // a gone bond: finite values, its results unused
+      // a gone bond: finite values, its results unused
+      Vec3 d = state.normal(b) * state.length0[b], dv, wi, wj;
+      double ri = state.radius[b], rj = ri;
       if (!st.flag[b]) {
         const std::uint32_t i = st.slot_i[b], j = st.slot_j[b];
         d = st.x[j] - st.x[i];
@@ -240,43 +278,34 @@ BondStepSums ParallelBond::update_range(const BondStep& st, std::size_t begin,
       t.dvx[k] = dv.x, t.dvy[k] = dv.y, t.dvz[k] = dv.z;
       t.wix[k] = wi.x, t.wiy[k] = wi.y, t.wiz[k] = wi.z;
       t.wjx[k] = wj.x, t.wjy[k] = wj.y, t.wjz[k] = wj.z;
-      t.nx[k] = s.normal.x, t.ny[k] = s.normal.y, t.nz[k] = s.normal.z;
-      t.fx[k] = s.shear_force.x, t.fy[k] = s.shear_force.y, t.fz[k] = s.shear_force.z;
-      t.mx[k] = s.moment.x, t.my[k] = s.moment.y, t.mz[k] = s.moment.z;
-      t.length0[k] = h.length0, t.radius[k] = h.radius;
-      t.tensile[k] = h.tensile_strength, t.shear[k] = h.shear_strength;
+      t.keep[k] = st.flag[b] || state.failed[b] != FailureMode::none ? 1.0 : 0.0;
     }
-    advance_batch(*this, t, n, st.dt);
+    advance_batch(*this, t, columns_at(state, b0), n, st.dt);
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t b = b0 + k;
-      BondLive& s = live[b];
       if (st.flag[b]) {  // gone: nothing
-        deliver_nothing(st, b);
+        deliver.nothing(b);
         continue;
       }
-      if (shape[b].failed != FailureMode::none) {  // failed before: nothing, as update_bonds()
+      if (state.failed[b] != FailureMode::none) {  // failed before: nothing, as update_bonds()
         st.flag[b] = 2;
         ++sums.failed;
-        deliver(st, b, {}, {}, {});
+        deliver(b, {}, {}, {});
         continue;
       }
-      s.normal = {t.nx[k], t.ny[k], t.nz[k]};
-      s.shear_force = {t.fx[k], t.fy[k], t.fz[k]};
-      s.moment = {t.mx[k], t.my[k], t.mz[k]};
-      s.strain_energy = t.energy[k];
       if (t.fails[k] != 0) {  // rare: on the whole record
-        BondState whole = st.state->get(b);
+        BondState whole = state.get(b);
         const double before = whole.dissipated;
         fail(whole, t.tension[k]);
-        st.state->set(b, whole);
+        state.set(b, whole);
         sums.released += whole.dissipated - before;
         st.flag[b] = 2;
         ++sums.failed;
-        deliver(st, b, {}, {}, {});  // zeros, as the fold of the arrays adds them
+        deliver(b, {}, {}, {});  // zeros, as the fold of the arrays adds them
         continue;
       }
-      sums.elastic += t.energy[k];
-      deliver(st, b, {t.lx[k], t.ly[k], t.lz[k]}, {t.tix[k], t.tiy[k], t.tiz[k]},
+      sums.elastic += state.strain_energy[b];
+      deliver(b, {t.lx[k], t.ly[k], t.lz[k]}, {t.tix[k], t.tiy[k], t.tiz[k]},
               {t.tjx[k], t.tjy[k], t.tjz[k]});
     }
   }

@@ -262,9 +262,8 @@ BondStepSums ParallelBond::update_range(const BondStep& st, std::size_t begin,
         __builtin_prefetch(st.v + i), __builtin_prefetch(st.v + j);
         __builtin_prefetch(st.w + i), __builtin_prefetch(st.w + j);
       }
-      // a gone bond: finite values, its results unused
-      Vec3 d = state.normal(b) * state.length0[b], dv, wi, wj;
-      double ri = state.radius[b], rj = ri;
+      Vec3 d, dv, wi, wj;
+      double ri, rj;
       if (!st.flag[b]) {
         const std::uint32_t i = st.slot_i[b], j = st.slot_j[b];
         d = st.x[j] - st.x[i];
@@ -273,6 +272,9 @@ BondStepSums ParallelBond::update_range(const BondStep& st, std::size_t begin,
         wj = st.w[j];
         ri = st.radius[i];
         rj = st.radius[j];
+      } else {  // a gone bond: finite values, its results unused
+        d = state.normal(b) * state.length0[b];
+        ri = rj = state.radius[b];
       }
       t.dx[k] = d.x, t.dy[k] = d.y, t.dz[k] = d.z, t.ri[k] = ri, t.rj[k] = rj;
       t.dvx[k] = dv.x, t.dvy[k] = dv.y, t.dvz[k] = dv.z;
@@ -283,6 +285,12 @@ BondStepSums ParallelBond::update_range(const BondStep& st, std::size_t begin,
     advance_batch(*this, t, columns_at(state, b0), n, st.dt);
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t b = b0 + k;
+      if (t.keep[k] == 0 && t.fails[k] == 0) {  // intact and loaded: the common case
+        sums.elastic += state.strain_energy[b];
+        deliver(b, {t.lx[k], t.ly[k], t.lz[k]}, {t.tix[k], t.tiy[k], t.tiz[k]},
+                {t.tjx[k], t.tjy[k], t.tjz[k]});
+        continue;
+      }
       if (st.flag[b]) {  // gone: nothing
         deliver.nothing(b);
         continue;
@@ -293,20 +301,15 @@ BondStepSums ParallelBond::update_range(const BondStep& st, std::size_t begin,
         deliver(b, {}, {}, {});
         continue;
       }
-      if (t.fails[k] != 0) {  // rare: on the whole record
-        BondState whole = state.get(b);
-        const double before = whole.dissipated;
-        fail(whole, t.tension[k]);
-        state.set(b, whole);
-        sums.released += whole.dissipated - before;
-        st.flag[b] = 2;
-        ++sums.failed;
-        deliver(b, {}, {}, {});  // zeros, as the fold of the arrays adds them
-        continue;
-      }
-      sums.elastic += state.strain_energy[b];
-      deliver(b, {t.lx[k], t.ly[k], t.lz[k]}, {t.tix[k], t.tiy[k], t.tiz[k]},
-              {t.tjx[k], t.tjy[k], t.tjz[k]});
+      // fails now (rare): on the whole record
+      BondState whole = state.get(b);
+      const double before = whole.dissipated;
+      fail(whole, t.tension[k]);
+      state.set(b, whole);
+      sums.released += whole.dissipated - before;
+      st.flag[b] = 2;
+      ++sums.failed;
+      deliver(b, {}, {}, {});  // zeros, as the fold of the arrays adds them
     }
   }
   return sums;

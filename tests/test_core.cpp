@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 #include "comminute/core/atomic_file.hpp"
 #include "comminute/core/case_table.hpp"
@@ -38,6 +39,18 @@ TEST(Rng, SameSeedSameStreamRepeats) {
     auto x = a.next_u64();
     EXPECT_EQ(x, b.next_u64());
     EXPECT_NE(x, c.next_u64());
+  }
+}
+
+// Per-item streams (a broken parent's, keyed by its id): the same seed, stream and key give the
+// same numbers; another key, stream or seed, or the plain stream, others.
+TEST(Rng, KeyedStreamsDependOnSeedStreamAndKeyOnly) {
+  Rng a(42, 2, 7), b(42, 2, 7);
+  std::vector<Rng> others{Rng(42, 2, 8), Rng(42, 3, 7), Rng(43, 2, 7), Rng(42, 2)};
+  for (int i = 0; i < 100; ++i) {
+    const auto x = a.next_u64();
+    EXPECT_EQ(x, b.next_u64());
+    for (auto& o : others) EXPECT_NE(x, o.next_u64());
   }
 }
 

@@ -42,11 +42,10 @@ void BreakageModule::register_fields(ParticleStore& p) {
 
 void BreakageModule::setup(Simulation& sim) {
   strength_rng_ = Rng(sim.seed, rng_stream::breakage);
-  placement_rng_ = Rng(sim.seed, rng_stream::placement);
   configure(sim);
   auto& p = sim.particles;
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.field(fields_.initialized)[i] == 0) initialize_particle(sim, i);
+    if (p.field(fields_.initialized)[i] == 0) initialize_particle(sim, i, strength_rng_);
 }
 
 void BreakageModule::configure(Simulation& sim) {
@@ -59,13 +58,13 @@ void BreakageModule::configure(Simulation& sim) {
   growth_.recount(p);
 }
 
-void BreakageModule::initialize_particle(Simulation& sim, std::size_t i) {
+void BreakageModule::initialize_particle(Simulation& sim, std::size_t i, Rng& rng) const {
   auto& p = sim.particles;
   p.field(fields_.initialized)[i] = 1;
   const auto& m = materials_[p.material[i]];
   if (!m) return;
   const double target = p.field(fields_.target)[i];
-  m->criterion->initialize(p, i, 2 * (target > 0 ? target : p.radius[i]), strength_rng_);
+  m->criterion->initialize(p, i, 2 * (target > 0 ? target : p.radius[i]), rng);
 }
 
 void BreakageModule::post_force(Simulation& sim) {
@@ -76,7 +75,7 @@ void BreakageModule::post_force(Simulation& sim) {
   const auto& initialized = p.field(fields_.initialized);
   for (const std::uint32_t i :
        parallel_filter(p.owned(), [&](std::size_t s) { return initialized[s] == 0; }))
-    initialize_particle(sim, i);
+    initialize_particle(sim, i, strength_rng_);
   events_.assess(sim, materials_, fields_, log_,
                  [&](std::size_t i, const EventRecord& r) { replacement_.enqueue(p.id[i], r); });
 }
@@ -92,17 +91,14 @@ double BreakageModule::rayleigh_floor(const Simulation& sim) const {
 Replacement::Context BreakageModule::replacement_context(Simulation& sim) {
   return {materials_,
           fields_,
-          strength_rng_,
-          placement_rng_,
           ledger_,
           log_,
           growth_,
           rayleigh_floor(sim),
           opt_.floor_rule,
-          [this, &sim](std::size_t s) {
+          [this, &sim](std::size_t s, Rng& rng) {
             events_.clear(sim.particles, s);
-            sim.particles.field(fields_.initialized)[s] = 0;
-            initialize_particle(sim, s);
+            initialize_particle(sim, s, rng);
           },
           mass_rule_};
 }
@@ -112,9 +108,8 @@ void BreakageModule::end_of_step(Simulation& sim) {
 }
 
 void BreakageModule::save(Archive& a) const {
-  const auto s1 = strength_rng_.state(), s2 = placement_rng_.state();
-  a.put("breakage/strength_rng", std::vector<std::uint64_t>(s1.begin(), s1.end()));
-  a.put("breakage/placement_rng", std::vector<std::uint64_t>(s2.begin(), s2.end()));
+  const auto s = strength_rng_.state();
+  a.put("breakage/strength_rng", std::vector<std::uint64_t>(s.begin(), s.end()));
   log_.save(a);
   ledger_.save(a);
   series_.save(a);
@@ -131,7 +126,6 @@ void BreakageModule::load(const Archive& a) {
     return s;
   };
   strength_rng_.set_state(to_state("breakage/strength_rng"));
-  placement_rng_.set_state(to_state("breakage/placement_rng"));
   log_.load(a);
   ledger_.load(a);
   series_.load(a);

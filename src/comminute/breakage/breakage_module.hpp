@@ -6,8 +6,9 @@
 //                whether it breaks (StressingEvents; breakage is decided during loading),
 //   end_of_step  replace the broken parents by fragments (Replacement, after the step's last
 //                half kick, so the fragments inherit the parent's final velocity).
-// The module holds the per-material settings, the shared per-particle fields and the RNG streams
-// (strength, placement); the energy ledger is a BreakageLedger, the event log an EventLog.
+// The module holds the per-material settings, the shared per-particle fields and the strength
+// stream of the particles it did not make (the fragments draw from their parent's streams,
+// replacement.hpp); the energy ledger is a BreakageLedger, the event log an EventLog.
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -73,7 +74,8 @@ class BreakageModule final : public Module {
 
  private:
   void configure(Simulation& sim);  // what depends on the simulation (after setup or load)
-  void initialize_particle(Simulation& sim, std::size_t i);  // draws its strength
+  // Draws particle i's strength from rng (initialized set: reads and writes slot i only).
+  void initialize_particle(Simulation& sim, std::size_t i, Rng& rng) const;
   Replacement::Context replacement_context(Simulation& sim);
 
   BreakageMaterials materials_;
@@ -81,7 +83,7 @@ class BreakageModule final : public Module {
   // s: the Rayleigh time below which fragments are density scaled (0: no scaling)
   double rayleigh_floor(const Simulation& sim) const;
   BreakageFields fields_;
-  Rng strength_rng_, placement_rng_;
+  Rng strength_rng_;  // the strengths of the particles the run starts with or inserts
   StressingEvents events_;
   FragmentGrowth growth_;
   Replacement replacement_;

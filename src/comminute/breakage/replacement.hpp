@@ -4,11 +4,15 @@
 // steps, batched. Books in the ledger the elastic energy that leaves with the parents' contacts,
 // the kinetic energy difference of parent and fragments, the fines' potential energy and the
 // elastic energy of the starting overlaps; logs each breakage.
+// The parents of a batch are worked out on all threads, each from random streams of its own
+// (rng.hpp: Rng(seed, rng_stream::breakage, parent id) for the progeny sizes and then the
+// fragments' strengths, Rng(seed, rng_stream::placement, parent id) for the placement), so a
+// parent's fragments do not depend on the other parents, the thread count or a restart; the
+// fragments are appended, and the ledger and the log booked, in the order the parents broke.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -29,8 +33,6 @@ class Replacement {
   struct Context {
     const BreakageMaterials& materials;
     const BreakageFields& fields;
-    Rng& strength_rng;   // progeny sizes (and the fragments' strengths, drawn by `born`)
-    Rng& placement_rng;  // placement inside the parent
     BreakageLedger& ledger;
     EventLog& log;
     FragmentGrowth& growth;
@@ -39,8 +41,8 @@ class Replacement {
     double rayleigh_floor;
     FloorRule floor_rule;
     // A fragment took slot s (parent's fields copied, generation and target set): clear its
-    // event and draw its strength.
-    std::function<void(std::size_t s)> born;
+    // event and draw its strength from `rng`. Called on all threads, for distinct slots.
+    std::function<void(std::size_t s, Rng& rng)> born;
     // Redistributes the fragment masses before placement (fragment_mass_rule.hpp), or null.
     FragmentMassRule* mass_rule = nullptr;
   };
@@ -62,16 +64,39 @@ class Replacement {
   struct Neighbour {
     std::uint32_t slot, parent_seen, seen;
   };
-  void replace(Simulation& sim, const Context& ctx, std::size_t parent,
-               const std::vector<Neighbour>& around, const EventRecord& rec);
+  // One parent's replacement, worked out before the store changes.
+  struct Outcome {
+    std::size_t parent = 0;  // slot
+    const std::vector<Neighbour>* around = nullptr;
+    EventRecord rec;
+    Progeny progeny;
+    // per fragment: final radius (m), mass (kg; inertial once placed), moment of inertia of the
+    // full-size sphere (kg m2), density scale (1 unless its Rayleigh time is below the floor)
+    std::vector<double> radii, masses, inertia, scales;
+    std::vector<Sphere> placed;  // starting centres and radii
+    FragmentVelocities vel;
+    double ke_out = 0, ke_in = 0;  // J: kinetic energy of the parent, of its fragments
+    Rng rng;                       // the parent's breakage stream, left at its fragments' strengths
+    std::size_t first = 0;         // slot of its first fragment once appended
+    double created = 0;            // J: elastic energy of its fragments' starting overlaps
+  };
+  // Progeny sizes and masses (o.parent, o.rec and o.around set).
+  void draw(const Simulation& sim, const Context& ctx, Outcome& o) const;
+  // Placement inside the parent and the fragments' velocities (after the mass rule).
+  void place(const Simulation& sim, const Context& ctx, Outcome& o) const;
+  // Appends the fragments (serial: slots and ids in parent order).
+  void append(Simulation& sim, const Context& ctx, Outcome& o);
+  // Elastic energy of the starting overlaps of outcome q's fragments with their siblings, the
+  // neighbours and the walls; a neighbour that broke in this batch counts by its fragments, once
+  // per pair of families (from the later parent). batch[j]: 1 + the outcome of slot j, or 0.
+  double created_energy(const Simulation& sim, const std::vector<Outcome>& outcomes, std::size_t q,
+                        const std::vector<std::uint32_t>& batch) const;
 
   std::shared_ptr<const FragmentPlacement> placement_;
   int interval_;
   std::vector<std::uint64_t> broken_ids_;  // found in post_force
   std::vector<EventRecord> broken_records_;
   std::vector<NewFragment> fragments_added_;  // appended this step
-  // slots [begin, end) of the fragments of each parent replaced this step, by parent id
-  std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t>> fragment_slots_;
 };
 
 }  // namespace comminute::breakage

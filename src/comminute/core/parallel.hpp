@@ -5,6 +5,7 @@
 #include <omp.h>
 
 #include <cstddef>
+#include <exception>
 #include <vector>
 #if defined(__SSE__)
 #include <xmmintrin.h>
@@ -59,5 +60,25 @@ void parallel_scatter(std::size_t n, std::vector<T>& out, const T& identity, Bod
 #pragma omp parallel for schedule(static) num_threads(nt) if (m >= 4096)
   for (std::size_t i = 0; i < m; ++i)
     for (const auto& c : copies) out[i] = combine(out[i], c[i]);
+}
+
+// body(k) for every k in [0, n), handed out one at a time to the threads as they come free: for
+// a few unequal pieces of work each writing only a result of its own, so the results do not
+// depend on the thread count. An exception a body throws is rethrown after the loop, that of the
+// lowest k (the one a serial loop would have met first).
+template <class Body>
+void parallel_for_each(std::size_t n, Body&& body) {
+  std::vector<std::exception_ptr> error(n);
+  const auto count = static_cast<std::ptrdiff_t>(n);
+#pragma omp parallel for schedule(dynamic, 1) if (n > 1)
+  for (std::ptrdiff_t k = 0; k < count; ++k) {
+    try {
+      body(static_cast<std::size_t>(k));
+    } catch (...) {
+      error[static_cast<std::size_t>(k)] = std::current_exception();
+    }
+  }
+  for (const auto& e : error)
+    if (e) std::rethrow_exception(e);
 }
 }  // namespace comminute

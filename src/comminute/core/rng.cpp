@@ -24,6 +24,9 @@ Rng::Rng(std::uint64_t seed, std::uint64_t stream) {
   for (auto& w : s_) w = splitmix64(x);
 }
 
+Rng::Rng(std::uint64_t seed, std::uint64_t stream, std::uint64_t key)
+    : Rng(seed ^ splitmix64(key), stream) {}
+
 std::uint64_t Rng::next_u64() {
   const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;
   const std::uint64_t t = s_[1] << 17;

@@ -1,5 +1,7 @@
 #include "comminute/bonds/bond_states.hpp"
 
+#include <algorithm>
+
 #include "comminute/bonds/bond_law.hpp"
 
 namespace comminute::bonds {
@@ -22,20 +24,11 @@ std::array<std::vector<double>*, 14> BondStates::columns() {
 }
 
 std::array<const std::vector<double>*, 14> BondStates::columns() const {
-  return {&nx,
-          &ny,
-          &nz,
-          &fx,
-          &fy,
-          &fz,
-          &mx,
-          &my,
-          &mz,
-          &strain_energy,
-          &length0,
-          &radius,
-          &tensile_strength,
-          &shear_strength};
+  // the same columns as the writable list, read-only
+  const auto writable = const_cast<BondStates*>(this)->columns();
+  std::array<const std::vector<double>*, 14> out{};
+  std::copy(writable.begin(), writable.end(), out.begin());
+  return out;
 }
 
 void BondStates::reserve(std::size_t n) {

@@ -150,7 +150,8 @@ void Replacement::draw(const Simulation& sim, const Context& ctx, Outcome& o) co
   const std::size_t parent = o.parent;
   const MaterialBreakage& mat = *ctx.materials[p.material[parent]];
   // A fragment that breaks while still growing counts at its final size.
-  const double r_parent = std::max(p.radius[parent], p.field(ctx.fields.target)[parent]);
+  o.r_parent = std::max(p.radius[parent], p.field(ctx.fields.target)[parent]);
+  const double r_parent = o.r_parent;
   const double d = 2 * r_parent;
   const double mass = p.physical_mass(parent);  // kg; p.mass is the inertial mass (x mass scale)
   const double density = mass / units::sphere_volume(r_parent);
@@ -198,9 +199,9 @@ void Replacement::place(const Simulation& sim, const Context& ctx, Outcome& o) c
     }
     return worst;
   };
-  const double r_parent = std::max(p.radius[parent], p.field(ctx.fields.target)[parent]);
   Rng rng(sim.seed, rng_stream::placement, p.id[parent]);
-  o.placed = placement_->place({p.x[parent], r_parent}, o.radii, o.masses, neighbours, walls, rng);
+  o.placed =
+      placement_->place({p.x[parent], o.r_parent}, o.radii, o.masses, neighbours, walls, rng);
   std::vector<Vec3> xs;
   for (const auto& s : o.placed) xs.push_back(s.x);
   const MaterialBreakage& mat = *ctx.materials[p.material[parent]];

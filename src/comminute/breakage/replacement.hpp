@@ -67,6 +67,7 @@ class Replacement {
   // One parent's replacement, worked out before the store changes.
   struct Outcome {
     std::size_t parent = 0;  // slot
+    double r_parent = 0;     // m: its radius, or its final one while it was still growing
     const std::vector<Neighbour>* around = nullptr;
     EventRecord rec;
     Progeny progeny;

@@ -47,13 +47,25 @@ std::unique_ptr<Simulation> shuffled_bed(int sort_every) {
 }
 
 // The breakage gas (breakage_engine_fixture.hpp, breakage_gas: weak 3 mm spheres at up to 3 m/s in
-// a closed box) sorting at every rebuild: parents are replaced by fragments between sorts, so
-// damage, the growing fragments' fields and the module's pending work must follow the permutations.
-std::unique_ptr<Simulation> sorting_breakage_gas(breakage::BreakageModule** module) {
+// a closed box) sorting every `sort_every` rebuilds: parents are replaced by fragments between
+// sorts, so damage, the growing fragments' fields and the module's pending work must follow the
+// permutations.
+std::unique_ptr<Simulation> sorting_breakage_gas(breakage::BreakageModule** module,
+                                                 int sort_every = 1) {
   omp_set_num_threads(1);
   auto sim = breakage_gas(module);
-  sim->options.sort_every = 1;
+  sim->options.sort_every = sort_every;
   return sim;
+}
+
+// Whether some fragment (id above the `n0` first particles) is stored before some first particle.
+bool fragment_stored_among_parents(const ParticleStore& p, std::uint64_t n0) {
+  std::size_t last_first = 0, first_fragment = p.size();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.id[i] <= n0) last_first = i;
+    if (p.id[i] > n0) first_fragment = std::min(first_fragment, i);
+  }
+  return first_fragment < last_first;
 }
 
 // Slot of each id (ids are 1..n).
@@ -157,4 +169,44 @@ TEST(CellSort, BreakageRunThatSortsRestartsBitForBit) {
     EXPECT_EQ(a->particles.field(k), b->particles.field(k)) << a->particles.field_names()[k];
   EXPECT_EQ(ma->fines_mass(), mb->fines_mass());
   EXPECT_EQ(ma->log().size(), mb->log().size());
+}
+
+TEST(CellSort, FragmentsAreSortedInOnceTheyAreAnEighthOfTheStore) {
+  // Fragments are appended at the end of the store. With sort_every = 1000 the periodic rule sorts
+  // only at the first rebuild; the second rule sorts at the first rebuild after the fragments
+  // appended since the last sort exceed an eighth of the store, so they end up among the first
+  // particles. Without sorting (sort_every = 0) they stay behind them: the check can tell.
+  breakage::BreakageModule *ma = nullptr, *mb = nullptr;
+  auto never = sorting_breakage_gas(&ma, 0);
+  auto rare = sorting_breakage_gas(&mb, 1000);
+  const std::uint64_t n0 = never->particles.size();
+  never->run(600);
+  rare->run(600);
+  omp_set_num_threads(omp_get_num_procs());
+  // enough fragments for the rule to fire (the two runs differ by round-off, which in a breaking
+  // gas is enough to change a breakage or two, so each is checked)
+  ASSERT_GT(never->particles.size(), n0 + n0 / 8);
+  ASSERT_GT(rare->particles.size(), n0 + n0 / 8);
+  EXPECT_GT(rare->neighbor_rebuilds(), 1u);
+  EXPECT_FALSE(fragment_stored_among_parents(never->particles, n0));
+  EXPECT_TRUE(fragment_stored_among_parents(rare->particles, n0));
+}
+
+TEST(CellSort, RestartKeepsTheCountOfFragmentsAppendedSinceTheLastSort) {
+  // The count is in the checkpoint, so a resumed run sorts at the same rebuild as the
+  // uninterrupted one. Checkpoints at steps 300 and 400 fall after fragments were appended and
+  // before the next sort by this rule: with the count dropped at loading (tried) the resumed runs
+  // sort later and their slots differ.
+  for (int save_at : {300, 400}) {
+    breakage::BreakageModule *ma = nullptr, *mb = nullptr;
+    auto a = sorting_breakage_gas(&ma, 1000);
+    auto b = sorting_breakage_gas(&mb, 1000);
+    a->setup();
+    run_restart_twin(*a, *b, save_at, 600 - save_at, [] {});
+    omp_set_num_threads(omp_get_num_procs());
+    EXPECT_EQ(ma->breakages(), mb->breakages()) << save_at;
+    EXPECT_EQ(a->particles.id, b->particles.id) << save_at;
+    EXPECT_EQ(a->particles.x, b->particles.x) << save_at;
+    EXPECT_EQ(a->particles.v, b->particles.v) << save_at;
+  }
 }

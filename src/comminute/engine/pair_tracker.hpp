@@ -46,9 +46,13 @@ class PairTracker {
   // reach changed by more than skin/2 (marks them stale).
   bool due(const ParticleStore& p, const SimulationOptions& options);
   // Before a rebuild: sets a zero skin from the particles and sorts them by cell every
-  // options.sort_every rebuilds. update() calls it unless the store holds ghosts (periodic runs
-  // call it before their ghosts are made).
-  void prepare(ParticleStore& p, SimulationOptions& options) const;
+  // options.sort_every rebuilds, or sooner when the fragments appended since the last sort are
+  // more than an eighth of the store (see appended()). update() calls it unless the store holds
+  // ghosts (periodic runs call it before their ghosts are made).
+  void prepare(ParticleStore& p, SimulationOptions& options);
+  // Breakage appended n fragments at the end of the store. Until a sort they sit there, away from
+  // their neighbours in memory, and the slot-split loops give all their work to the last thread.
+  void appended(std::size_t n) { appended_since_sort_ += n; }
   // Rebuilds the lists when due(); the contact state follows. Returns true when it rebuilt. With
   // periodic boundaries, `labels` holds each slot's image label (the store holds its ghosts, and
   // prepare() has run): the carry follows pairs across wraps and ghost rebuilds.
@@ -112,6 +116,7 @@ class PairTracker {
   std::vector<double> r_spare_;
   bool stale_ = true;
   std::uint64_t rebuilds_ = 0;
+  std::uint64_t appended_since_sort_ = 0;  // fragments appended since the last sort
   double max_disp2_ = 0;
 };
 

@@ -79,6 +79,7 @@ void Simulation::report_non_finite() const {
 }
 
 void Simulation::particles_replaced(const std::vector<NewFragment>& fragments) {
+  tracker_.appended(fragments.size());
   if (ghosts_.active()) {  // the ghosts are planned anew from the fragments at a rebuild
     particles_changed();
     return;

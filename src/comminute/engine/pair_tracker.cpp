@@ -326,9 +326,8 @@ void PairTracker::load(const Archive& a, const ParticleStore& p, double skin,
   wall_full_scan_ = std::move(full_scan);
   rebuilds_ = a.get_value<std::uint64_t>("sim/rebuilds");
   // (absent in checkpoints written before the rule existed: their runs had not counted)
-  appended_since_sort_ = a.has("sim/appended_since_sort")
-                             ? a.get_value<std::uint64_t>("sim/appended_since_sort")
-                             : 0;
+  appended_since_sort_ =
+      a.has("sim/appended_since_sort") ? a.get_value<std::uint64_t>("sim/appended_since_sort") : 0;
   max_disp2_ = disp2;
   stale_ = stale;
 }

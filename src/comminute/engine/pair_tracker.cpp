@@ -53,8 +53,8 @@ void PairTracker::prepare(ParticleStore& p, SimulationOptions& options) {
     for (double r : p.radius) mean += 2 * r;
     options.skin = 0.2 * mean / static_cast<double>(p.size());
   }
-  // an eighth: on the breakage bench (bench_breakage 50000, two threads) this sorts 4 times in
-  // 18 rebuilds instead of once, and the fragments' work is shared between the threads
+  // an eighth: on the breakage bench (bench_breakage 50000, 300 steps) the fragments' work is then
+  // shared between the threads (bench/RESULTS.md, eleventh stop)
   const bool crowded_tail = 8 * appended_since_sort_ > p.size();
   const bool sort_now =
       options.sort_every > 0 && (rebuilds_ % options.sort_every == 0 || crowded_tail);

@@ -2,7 +2,7 @@
 # Instructions the DEM step executes, counted by valgrind's callgrind: a number that, unlike a
 # timing, is the same on a busy machine and on a quiet one (the same binary, case and steps give
 # the same count), so a change to the contact loops can be judged on one run. It is not a speed:
-# on the Intel machine of bench/RESULTS.md ("Twelfth stop") 18 % fewer instructions ran only 3-6 %
+# on the Intel machine of bench/RESULTS.md ("Twelfth stop") 18 % fewer instructions ran only about 4 %
 # faster. Prints the instructions inside Simulation::run (set-up excluded), per particle-step, and
 # the functions that execute the most.
 #

@@ -10,16 +10,21 @@
 #   BUILD=build STEPS=20 CASE=bench/cases/drum_20000.toml bench/instruction_count.sh
 #
 # One thread; about 45 s for 20 steps of the dense bed (valgrind runs ~50x slower than native).
-# Needs valgrind and, for the dense case, bench/data/dense_N100000.data (bench/make_dense_state.sh).
+# Installs valgrind if missing (scripts/install-deps); the dense case needs
+# bench/data/dense_N100000.data (bench/make_dense_state.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+COMMINUTE_PEERS=1 scripts/install-deps
 BUILD=${BUILD:-build}
 STEPS=${STEPS:-20}
 CASE=${CASE:-bench/cases/dense_100000.toml}
 OUT=$(mktemp /tmp/callgrind.XXXXXX)
 trap 'rm -f "$OUT"' EXIT
 bin="$BUILD/bench/bench_dem_throughput"
-[ -x "$bin" ] || { echo "instruction_count.sh: $bin not built (ninja -C $BUILD bench_dem_throughput)" >&2; exit 1; }
+[ -x "$bin" ] || {
+  echo "instruction_count.sh: $bin not built (ninja -C $BUILD bench_dem_throughput)" >&2
+  exit 1
+}
 line=$(OMP_NUM_THREADS=1 valgrind --tool=callgrind --callgrind-out-file="$OUT" --collect-atstart=no \
   "--toggle-collect=comminute::Simulation::run(*" "$bin" "$CASE" 0 "$STEPS" 2>/dev/null | tail -1)
 n=$(sed -n 's/.*N=\([0-9]*\).*/\1/p' <<<"$line")
@@ -27,4 +32,5 @@ total=$(callgrind_annotate "$OUT" 2>/dev/null | awk '/PROGRAM TOTALS/ {gsub(",",
 echo "case=$CASE steps=$STEPS N=$n instructions=$total per_particle_step=$((total / (n * STEPS)))"
 # the functions: "count (share) file:name(arguments) ..." -> "count share name"
 callgrind_annotate --inclusive=no "$OUT" 2>/dev/null | grep -E '^ *[0-9,]+ \(' | grep -v 'PROGRAM TOTALS' |
-  head -8 | sed -E "s/\(anonymous namespace\)/{anonymous}/" | sed -E 's/^ *([0-9,]+) \(([^)]*)\) +([^ :]*:)?([^:][^(]*).*/\1 \2 \4/'
+  head -8 | sed -E -e 's/\(anonymous namespace\)/{anonymous}/g' \
+    -e 's/^ *([0-9,]+) \(([^)]*)\) +([^ :]*:)?([^:][^(]*).*/\1 \2 \4/'

@@ -30,6 +30,7 @@ OUT=${OUT:-$(mktemp -d /tmp/roofline.XXXXXX)}
 mkdir -p "$OUT"
 if [[ -z ${REPORT_ONLY:-} ]]; then  # REPORT_ONLY=1 OUT=dir: print the block from a run's files
 [[ -f $DATA ]] || { echo "missing $DATA (run bench/make_dense_state.sh)" >&2; exit 2; }
+COMMINUTE_PEERS=1 scripts/install-deps  # perf
 cmake --build "$BUILD" -j2 --target stream_bandwidth bench_dem_throughput >/dev/null
 
 echo "== STREAM ($OUT/stream.txt)" >&2

@@ -7,26 +7,28 @@
 
 namespace comminute {
 
-double VelocityVerlet::kick_drift(ParticleStore& p, double dt, const Vec3& gravity,
-                                  const std::vector<Vec3>& x_build) {
+VelocityVerlet::Drift VelocityVerlet::kick_drift(ParticleStore& p, double dt, const Vec3& gravity,
+                                                 const std::vector<Vec3>& x_build) {
   const std::size_t n = p.owned();
   // (the build positions also hold the ghosts of a periodic run, after the owned particles)
   const bool track = x_build.size() >= n;
   const double h = 0.5 * dt;
   const Vec3 g = gravity;
-  double worst = 0;
-#pragma omp parallel for schedule(static) reduction(max : worst) if (n >= kParallelMin)
+  double worst = 0, step = 0;
+#pragma omp parallel for schedule(static) reduction(max : worst, step) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     if (!(p.flags[i] & pflag::fixed)) {
       p.v[i] += (h / p.mass[i]) * p.f[i];
       p.w[i] += (h / p.inertia[i]) * p.t[i];
-      p.x[i] += dt * p.v[i];
+      const Vec3 dx = dt * p.v[i];
+      p.x[i] += dx;
+      step = std::max(step, norm2(dx));
     }
     p.f[i] = p.mass[i] * g;
     p.t[i] = {};
     if (track) worst = std::max(worst, norm2(p.x[i] - x_build[i]));
   }
-  return track ? worst : std::numeric_limits<double>::infinity();
+  return {track ? worst : std::numeric_limits<double>::infinity(), step};
 }
 
 namespace {

@@ -10,12 +10,17 @@ namespace comminute {
 
 class VelocityVerlet {
  public:
+  // What a drift moved: the largest |x - x_build|^2 when `x_build` holds a position per owned
+  // particle, else infinity (the caller then rebuilds), and the largest squared displacement of
+  // this drift (m2).
+  struct Drift {
+    double from_build2 = 0;
+    double step2 = 0;
+  };
   // First half kick and drift of every free owned particle (ghosts follow their owners), and the
-  // start of the force sum (gravity, zero torque) in the same pass. Returns the largest
-  // |x - x_build|^2 (m2) when `x_build` holds a position per owned particle, else infinity (the
-  // caller then rebuilds).
-  static double kick_drift(ParticleStore& p, double dt, const Vec3& gravity,
-                           const std::vector<Vec3>& x_build);
+  // start of the force sum (gravity, zero torque) in the same pass.
+  static Drift kick_drift(ParticleStore& p, double dt, const Vec3& gravity,
+                          const std::vector<Vec3>& x_build);
   // Second half kick of the owned particles; true when some particle's state became non-finite.
   static bool kick(ParticleStore& p, double dt);
   // Sets every owned particle's force to its weight and its torque to zero.

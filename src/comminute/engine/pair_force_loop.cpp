@@ -21,8 +21,9 @@ struct Touching {                   // a touching pair of a run: its particles a
 }  // namespace
 
 void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const NeighborList& pairs,
-                        const ContactPipeline& pipeline, ContactStateStore& state, double dt,
-                        EnergyLedger& ledger, double& elastic, std::vector<EndedContact>& ended) {
+                        const PrunedPairs* near, const ContactPipeline& pipeline,
+                        ContactStateStore& state, double dt, EnergyLedger& ledger, double& elastic,
+                        std::vector<EndedContact>& ended) {
   const std::size_t n = p.size();
   const std::size_t npairs = pairs.size();
   const int nt = npairs >= 2 * kParallelMin ? max_threads() : 1;
@@ -163,68 +164,80 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
       std::fill_n(out.begin(), nrun, ContactForces{});
       nrun = 0;
     };
-    for (std::size_t k = k0; k < k1;) {
-      // 1. gather the next run of touching pairs without a branch per pair (whether a pair
-      // touches is unpredictable in a dense bed); a pair that separated is rare
-      for (; k < k1 && nrun < kRun; ++k) {
-        const std::uint32_t i = first[k], j = second[k];
-        // the other particles are scattered in memory: their positions are asked for kAhead
-        // pairs early, the fields read later (kinematics, forces) as soon as the pair is seen
-        const std::uint32_t ja = second[std::min(k + kAhead, k1 - 1)];
-        __builtin_prefetch(&X[ja]);
-        __builtin_prefetch(&R[ja]);
-        __builtin_prefetch(&V[j]);
-        __builtin_prefetch(&W[j]);
-        __builtin_prefetch(&M[j]);
-        __builtin_prefetch(&mat[j]);
-        __builtin_prefetch(&F[j], 1);
-        __builtin_prefetch(&T[j], 1);
-        for (std::size_t c = 0; c < ncolumns; ++c)
-          __builtin_prefetch(columns[c] + k * widths[c], 1);
-        const Vec3 d = X[i] - X[j];
-        const double rsum = R[i] + R[j];
-        const double dist2 = norm2(d);
-        const bool touches = dist2 < rsum * rsum;
-        gap[nrun] = d;
-        gap2[nrun] = dist2;
-        reach[nrun] = rsum;
-        index[nrun] = k;
-        nrun += touches ? 1 : 0;
-        if (!touches & (active[k] != 0)) {  // the bodies separated: the contact's state is gone
-          if (record) separated.push_back({i, j, false, record->totals(state.at(k))});
-          state.clear(k);
+    // the pairs visited, by position m: the pruned list's (pair_at(m) = its m-th pair), or all of
+    // [k0, k1) (pair_at(m) = m)
+    const auto visit = [&](auto pair_at, std::size_t m0, std::size_t m1) {
+      for (std::size_t m = m0; m < m1;) {
+        // 1. gather the next run of touching pairs without a branch per pair (whether a pair
+        // touches is unpredictable in a dense bed); a pair that separated is rare
+        for (; m < m1 && nrun < kRun; ++m) {
+          const std::size_t k = pair_at(m);
+          const std::uint32_t i = first[k], j = second[k];
+          // the other particles are scattered in memory: their positions are asked for kAhead
+          // pairs early, the fields read later (kinematics, forces) as soon as the pair is seen
+          const std::uint32_t ja = second[pair_at(std::min(m + kAhead, m1 - 1))];
+          __builtin_prefetch(&X[ja]);
+          __builtin_prefetch(&R[ja]);
+          __builtin_prefetch(&V[j]);
+          __builtin_prefetch(&W[j]);
+          __builtin_prefetch(&M[j]);
+          __builtin_prefetch(&mat[j]);
+          __builtin_prefetch(&F[j], 1);
+          __builtin_prefetch(&T[j], 1);
+          for (std::size_t c = 0; c < ncolumns; ++c)
+            __builtin_prefetch(columns[c] + k * widths[c], 1);
+          const Vec3 d = X[i] - X[j];
+          const double rsum = R[i] + R[j];
+          const double dist2 = norm2(d);
+          const bool touches = dist2 < rsum * rsum;
+          gap[nrun] = d;
+          gap2[nrun] = dist2;
+          reach[nrun] = rsum;
+          index[nrun] = k;
+          nrun += touches ? 1 : 0;
+          if (!touches & (active[k] != 0)) {  // the bodies separated: the contact's state is gone
+            if (record) separated.push_back({i, j, false, record->totals(state.at(k))});
+            state.clear(k);
+          }
         }
-      }
-      // 2. the kinematics of the run's contacts; the distances' roots first, in a loop of their
-      // own (independent roots overlap instead of each contact waiting on its own)
-      for (std::size_t c = 0; c < nrun; ++c) dist[c] = std::sqrt(gap2[c]);
-      for (std::size_t c = 0; c < nrun; ++c) {
-        const std::size_t kc = index[c];
-        const std::uint32_t i = first[kc], j = second[kc];
-        if (sp && !active[kc]) sp->starts.push_back({i, static_cast<std::int32_t>(j)});
-        active[kc] = 1;
-        const double rsum = reach[c];
-        const Vec3 nrm = gap[c] / dist[c];
-        const double overlap = rsum - dist[c];
-        const double ri = R[i] - 0.5 * overlap, rj = R[j] - 0.5 * overlap;
-        const Vec3 vrel = V[i] - V[j] - cross(W[i], ri * nrm) - cross(W[j], rj * nrm);
-        const double vn = dot(vrel, nrm);
-        ContactKinematics& ct = ck[c];
-        ct.normal = nrm;
-        ct.overlap = overlap;
-        ct.overlap_rate = -vn;
-        ct.tangential_velocity = vrel - vn * nrm;
-        ct.effective_radius = R[i] * R[j] / rsum;
-        ct.effective_mass = M[i] * M[j] / (M[i] + M[j]);
-        if (rolling) {  // read by the rolling models only
-          ct.relative_angular_velocity = W[i] - W[j];
-          ct.effective_inertia = I[i] * I[j] / (I[i] + I[j]);
+        // 2. the kinematics of the run's contacts; the distances' roots first, in a loop of their
+        // own (independent roots overlap instead of each contact waiting on its own)
+        for (std::size_t c = 0; c < nrun; ++c) dist[c] = std::sqrt(gap2[c]);
+        for (std::size_t c = 0; c < nrun; ++c) {
+          const std::size_t kc = index[c];
+          const std::uint32_t i = first[kc], j = second[kc];
+          if (sp && !active[kc]) sp->starts.push_back({i, static_cast<std::int32_t>(j)});
+          active[kc] = 1;
+          const double rsum = reach[c];
+          const Vec3 nrm = gap[c] / dist[c];
+          const double overlap = rsum - dist[c];
+          const double ri = R[i] - 0.5 * overlap, rj = R[j] - 0.5 * overlap;
+          const Vec3 vrel = V[i] - V[j] - cross(W[i], ri * nrm) - cross(W[j], rj * nrm);
+          const double vn = dot(vrel, nrm);
+          ContactKinematics& ct = ck[c];
+          ct.normal = nrm;
+          ct.overlap = overlap;
+          ct.overlap_rate = -vn;
+          ct.tangential_velocity = vrel - vn * nrm;
+          ct.effective_radius = R[i] * R[j] / rsum;
+          ct.effective_mass = M[i] * M[j] / (M[i] + M[j]);
+          if (rolling) {  // read by the rolling models only
+            ct.relative_angular_velocity = W[i] - W[j];
+            ct.effective_inertia = I[i] * I[j] / (I[i] + I[j]);
+          }
+          pp[c] = &materials.pair(mat[i], mat[j]);
+          who[c] = {i, j, ri, rj};
         }
-        pp[c] = &materials.pair(mat[i], mat[j]);
-        who[c] = {i, j, ri, rj};
+        // 3. the law and the forces
+        if (nrun == kRun || m == m1) flush();
       }
-      // 3. the law and the forces
-      if (nrun == kRun || k == k1) flush();
+    };
+    if (near != nullptr) {
+      const auto [m0, m1] = near->range(k0, k1);
+      const std::uint32_t* kept = near->pairs().data();
+      visit([kept](std::size_t m) { return static_cast<std::size_t>(kept[m]); }, m0, m1);
+    } else {
+      visit([](std::size_t m) { return m; }, k0, k1);
     }
     tally[t] = tl;
   }

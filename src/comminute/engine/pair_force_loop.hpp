@@ -12,6 +12,7 @@
 #include "comminute/engine/ended_contact.hpp"
 #include "comminute/engine/energy_tally.hpp"
 #include "comminute/neighbor/neighbor_list.hpp"
+#include "comminute/neighbor/pruned_pairs.hpp"
 #include "comminute/particles/material.hpp"
 #include "comminute/particles/particle_store.hpp"
 
@@ -25,10 +26,11 @@ class PairForceLoop {
   // the collision record, appends the pairs that separated to `ended`, in pair order. When the
   // pipeline carries a ContactStress, lists the contacts that began and, on armed steps, fills its
   // moments, counts and contact list (the other particle's share queued like its force, lists in
-  // thread order).
+  // thread order). With `near` (not null) it visits only the pairs of `pairs` that `near` kept:
+  // every pair that may touch.
   void run(ParticleStore& p, const MaterialTable& materials, const NeighborList& pairs,
-           const ContactPipeline& pipeline, ContactStateStore& state, double dt,
-           EnergyLedger& ledger, double& elastic, std::vector<EndedContact>& ended);
+           const PrunedPairs* near, const ContactPipeline& pipeline, ContactStateStore& state,
+           double dt, EnergyLedger& ledger, double& elastic, std::vector<EndedContact>& ended);
 
  private:
   struct CrossForce {  // a pair's share for a particle owned by another thread

@@ -36,15 +36,51 @@ bool PairTracker::due(const ParticleStore& p, const SimulationOptions& options) 
     for (double t : wall_travel_) travel = std::max(travel, t);
     // |x - x_build| for every particle; plus the change of radius for the tracked ones
     // (a max: exact, so the same on any number of threads)
-    double reach = std::sqrt(max_disp2_);
+    // and, while the pruned list is current, their growth beyond the radii it was pruned with
+    double reach = std::sqrt(max_disp2_), growth = 0;
+    const bool pruned = near_valid_ && r_pruned_.size() == reach_tracked_.size();
     const auto n_tracked = static_cast<std::ptrdiff_t>(reach_tracked_.size());
-#pragma omp parallel for schedule(static) reduction(max : reach) if (n_tracked >= 16384)
-    for (std::ptrdiff_t q = 0; q < n_tracked; ++q)
-      reach = std::max(reach, reach_change(p, reach_tracked_[static_cast<std::size_t>(q)]));
+#pragma omp parallel for schedule(static) reduction(max : reach, growth) if (n_tracked >= 16384)
+    for (std::ptrdiff_t q = 0; q < n_tracked; ++q) {
+      const auto uq = static_cast<std::size_t>(q);
+      const std::size_t i = reach_tracked_[uq];
+      reach = std::max(reach, reach_change(p, i));
+      if (pruned) growth = std::max(growth, p.radius[i] - r_pruned_[uq]);
+    }
+    growth_ = pruned ? growth : 0;
     const double limit = 0.5 * options.skin;
     if (reach > limit || travel > limit) stale_ = true;
   }
   return stale_;
+}
+
+void PairTracker::moved(double max_displacement2, double step2) {
+  max_disp2_ = max_displacement2;
+  prune_travel_ += std::sqrt(step2);
+}
+
+const PrunedPairs* PairTracker::near_pairs(const ParticleStore& p, const SimulationOptions& options,
+                                           const std::vector<std::uint8_t>& active) {
+  const double buffer = options.prune_buffer < 0 ? 0.25 * options.skin : options.prune_buffer;
+  if (!(buffer > 0 && buffer < options.skin) || stale_ || r_at_build_.size() != p.size())
+    return nullptr;
+  // A pair left out was at least `buffer` from touching at the prune, with each radius taken as the
+  // larger of the radius and the reach sphere's. Since then each particle moved at most
+  // prune_travel_ and grew at most growth_ beyond that radius, so the pair cannot touch while
+  // 2 (prune_travel_ + growth_) <= buffer; the factor below leaves room for round-off.
+  if (!near_valid_ || 2 * (prune_travel_ + growth_) > (1 - 1e-9) * buffer) {
+    near_.prune(p, nlist_, r_at_build_.data(), buffer, active.data());
+    r_pruned_.resize(reach_tracked_.size());
+    for (std::size_t q = 0; q < reach_tracked_.size(); ++q) {
+      const std::uint32_t i = reach_tracked_[q];
+      r_pruned_[q] = std::max(p.radius[i], r_at_build_[i]);
+    }
+    near_valid_ = true;
+    prune_travel_ = 0;
+    growth_ = 0;
+    ++prunes_;
+  }
+  return &near_;
 }
 
 void PairTracker::prepare(ParticleStore& p, SimulationOptions& options) {
@@ -84,6 +120,7 @@ void PairTracker::rebuild(ParticleStore& p, const Walls& walls, SimulationOption
     if (p.flags[i] & pflag::growing) reach_tracked_.push_back(static_cast<std::uint32_t>(i));
   build_wall_candidates(p, walls, options.skin, wall_state);
   stale_ = false;
+  near_valid_ = false;
   ++rebuilds_;
 }
 
@@ -194,6 +231,7 @@ bool PairTracker::replace(const ParticleStore& p, const Walls& walls, double ski
   r_at_build_.swap(r_build);
   reach_tracked_.swap(tracked);
   nlist_.update_in_place(p, to_new, x_at_build_, r_at_build_);
+  near_valid_ = false;
   pair_state.gather(nlist_.kept_from());
   // wall candidates: kept ones remapped, each fragment's found at its reach sphere
   std::vector<WallContactRecord> kept;
@@ -330,6 +368,7 @@ void PairTracker::load(const Archive& a, const ParticleStore& p, double skin,
       a.has("sim/appended_since_sort") ? a.get_value<std::uint64_t>("sim/appended_since_sort") : 0;
   max_disp2_ = disp2;
   stale_ = stale;
+  near_valid_ = false;  // pruned again at the next step: the same pairs touch, so the same bits
 }
 
 }  // namespace comminute

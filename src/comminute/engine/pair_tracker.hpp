@@ -14,6 +14,7 @@
 #include "comminute/engine/wall_element_lists.hpp"
 #include "comminute/geometry/wall.hpp"
 #include "comminute/neighbor/neighbor_list.hpp"
+#include "comminute/neighbor/pruned_pairs.hpp"
 #include "comminute/particles/particle_store.hpp"
 
 namespace comminute {
@@ -27,6 +28,9 @@ struct NewFragment {
 struct SimulationOptions {
   double skin = 0;      // m, Verlet skin (0: 0.2 x mean diameter at the first build with particles)
   int sort_every = 20;  // re-sort particles by cell every this many list rebuilds (0: never)
+  // m, buffer of the pruned pair list the force loop visits (PrunedPairs); negative: a quarter of
+  // the skin; 0, or not below the skin: no pruning (the force loop visits every listed pair)
+  double prune_buffer = -1;
 };
 
 class PairTracker {
@@ -38,9 +42,9 @@ class PairTracker {
   bool stale() const { return stale_; }
   // Positions at the last build, one per particle while the lists are current.
   const std::vector<Vec3>& build_positions() const { return x_at_build_; }
-  // After a drift: the largest squared displacement since the build (m2), and the distance
-  // wall k moved this step (m).
-  void moved(double max_displacement2) { max_disp2_ = max_displacement2; }
+  // After a drift: the largest squared displacement since the build and the largest squared
+  // displacement of this drift (m2), and the distance wall k moved this step (m).
+  void moved(double max_displacement2, double step2);
   void wall_moved(std::size_t k, double distance) { wall_travel_[k] += distance; }
   // Whether the lists must be rebuilt before the next force computation: they are stale or some
   // reach changed by more than skin/2 (marks them stale).
@@ -69,6 +73,12 @@ class PairTracker {
   // How much particle i may still move or grow (m) before the lists stop covering it.
   double reach_margin(const ParticleStore& p, std::size_t i, double skin) const;
 
+  // After update(): the pairs the force loop must visit, pruned again when particles may have
+  // moved or grown half the prune buffer since the last prune (pairs flagged in `active` are
+  // kept: the loop ends their contacts); null when the options ask for no pruning.
+  const PrunedPairs* near_pairs(const ParticleStore& p, const SimulationOptions& options,
+                                const std::vector<std::uint8_t>& active);
+  std::uint64_t prunes() const { return prunes_; }
   const NeighborList& pairs() const { return nlist_; }
   NeighborList& pairs() { return nlist_; }
   const std::vector<WallContactRecord>& wall_candidates() const { return wall_candidates_; }
@@ -118,6 +128,16 @@ class PairTracker {
   std::uint64_t rebuilds_ = 0;
   std::uint64_t appended_since_sort_ = 0;  // fragments appended since the last sort
   double max_disp2_ = 0;
+  // The pruned list: valid until a rebuild or in-place update; the sum of the drifts' largest
+  // displacements since it was made (m, bounds every particle's); the radii it took for the
+  // tracked particles (m, by their place in reach_tracked_) and their largest growth beyond them
+  // (m, from due())
+  PrunedPairs near_;
+  bool near_valid_ = false;
+  double prune_travel_ = 0;
+  std::vector<double> r_pruned_;
+  double growth_ = 0;
+  std::uint64_t prunes_ = 0;
 };
 
 }  // namespace comminute

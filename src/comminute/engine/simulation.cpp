@@ -47,7 +47,8 @@ void Simulation::run(std::uint64_t n) {
 void Simulation::step() {
   if (!is_setup_) setup();
   if (step_control) dt = step_control->decide(particles, materials);
-  tracker_.moved(VelocityVerlet::kick_drift(particles, dt, gravity, tracker_.build_positions()));
+  const auto drift = VelocityVerlet::kick_drift(particles, dt, gravity, tracker_.build_positions());
+  tracker_.moved(drift.from_build2, drift.step2);
   forces_cleared_ = true;
   for (std::size_t k = 0; k < walls.size(); ++k) {
     walls[k]->advance(dt);
@@ -154,7 +155,8 @@ void Simulation::compute_forces() {
   ended_contacts_.clear();
   ContactStress* stress = contacts_.stress();
   if (stress) stress->begin(particles.size());
-  pair_loop_.run(particles, materials, tracker_.pairs(), contacts_, pair_state_, dt, ledger,
+  const PrunedPairs* near = tracker_.near_pairs(particles, options, pair_state_.active);
+  pair_loop_.run(particles, materials, tracker_.pairs(), near, contacts_, pair_state_, dt, ledger,
                  elastic_energy_, ended_contacts_);
   wall_loop_.run(particles, materials, walls, tracker_.wall_candidates(), tracker_.wall_elements(),
                  contacts_, wall_state_, dt, ledger, elastic_energy_, wall_contacts_,

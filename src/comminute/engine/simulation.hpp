@@ -116,6 +116,8 @@ class Simulation {
   const ContactPipeline& contacts() const { return contacts_; }
   Observables observe() const;
   std::uint64_t neighbor_rebuilds() const { return tracker_.rebuilds(); }
+  // How often the force loop's pruned pair list was made (options.prune_buffer).
+  std::uint64_t pair_prunes() const { return tracker_.prunes(); }
 
   void save(Archive& a) const;
   void load(const Archive& a);

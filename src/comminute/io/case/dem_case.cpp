@@ -235,6 +235,8 @@ DemCase build_dem_case(const CaseTable& root) {
   sim.gravity = s.vec3("gravity", Limits::any(), {0, 0, -9.81});
   sim.options.skin = s.number("skin", Limits::non_negative(), 0.0);
   sim.options.sort_every = static_cast<int>(s.integer("sort_every", 0, 1'000'000, 20));
+  if (s.has("prune_buffer"))
+    sim.options.prune_buffer = s.number("prune_buffer", Limits::non_negative());
 
   read_materials(root, sim);
   read_interactions(root, sim);

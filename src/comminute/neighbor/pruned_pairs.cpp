@@ -1,0 +1,53 @@
+#include "comminute/neighbor/pruned_pairs.hpp"
+
+#include <algorithm>
+
+#include "comminute/core/parallel.hpp"
+
+namespace comminute {
+
+void PrunedPairs::prune(const ParticleStore& p, const NeighborList& list, const double* reach,
+                        double buffer, const std::uint8_t* keep) {
+  const std::size_t npairs = list.size();
+  const int nt = npairs >= 65536 ? max_threads() : 1;
+  parts_.resize(static_cast<std::size_t>(nt));
+  offsets_.assign(static_cast<std::size_t>(nt) + 1, 0);
+#pragma omp parallel num_threads(nt)
+  {
+    const auto t = static_cast<std::size_t>(thread_id());
+    const auto unt = static_cast<std::size_t>(nt);
+    const std::size_t k0 = npairs * t / unt, k1 = npairs * (t + 1) / unt;
+    const std::uint32_t *first = list.first.data(), *second = list.second.data();
+    const Vec3* X = p.x.data();
+    const double* R = p.radius.data();
+    auto& part = parts_[t];
+    part.clear();
+    for (std::size_t k = k0; k < k1; ++k) {
+      const std::uint32_t i = first[k], j = second[k];
+      const double ri = reach ? std::max(R[i], reach[i]) : R[i];
+      const double rj = reach ? std::max(R[j], reach[j]) : R[j];
+      const double within = ri + rj + buffer;
+      if (norm2(X[i] - X[j]) < within * within || (keep && keep[k] != 0))
+        part.push_back(static_cast<std::uint32_t>(k));
+    }
+    offsets_[t + 1] = part.size();
+#pragma omp barrier
+#pragma omp single
+    {
+      for (std::size_t u = 0; u < unt; ++u) offsets_[u + 1] += offsets_[u];
+      pairs_.resize(offsets_[unt]);
+    }
+    std::copy(part.begin(), part.end(), pairs_.begin() + static_cast<std::ptrdiff_t>(offsets_[t]));
+    std::vector<std::uint32_t>().swap(part);  // not resident between prunes
+  }
+}
+
+std::pair<std::size_t, std::size_t> PrunedPairs::range(std::size_t k0, std::size_t k1) const {
+  const auto at = [&](std::size_t k) {
+    return static_cast<std::size_t>(std::lower_bound(pairs_.begin(), pairs_.end(), k) -
+                                    pairs_.begin());
+  };
+  return {at(k0), at(k1)};
+}
+
+}  // namespace comminute

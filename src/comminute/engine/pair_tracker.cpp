@@ -36,18 +36,11 @@ bool PairTracker::due(const ParticleStore& p, const SimulationOptions& options) 
     for (double t : wall_travel_) travel = std::max(travel, t);
     // |x - x_build| for every particle; plus the change of radius for the tracked ones
     // (a max: exact, so the same on any number of threads)
-    // and, while the pruned list is current, their growth beyond the radii it was pruned with
-    double reach = std::sqrt(max_disp2_), growth = 0;
-    const bool pruned = near_valid_ && r_pruned_.size() == reach_tracked_.size();
+    double reach = std::sqrt(max_disp2_);
     const auto n_tracked = static_cast<std::ptrdiff_t>(reach_tracked_.size());
-#pragma omp parallel for schedule(static) reduction(max : reach, growth) if (n_tracked >= 16384)
-    for (std::ptrdiff_t q = 0; q < n_tracked; ++q) {
-      const auto uq = static_cast<std::size_t>(q);
-      const std::size_t i = reach_tracked_[uq];
-      reach = std::max(reach, reach_change(p, i));
-      if (pruned) growth = std::max(growth, p.radius[i] - r_pruned_[uq]);
-    }
-    growth_ = pruned ? growth : 0;
+#pragma omp parallel for schedule(static) reduction(max : reach) if (n_tracked >= 16384)
+    for (std::ptrdiff_t q = 0; q < n_tracked; ++q)
+      reach = std::max(reach, reach_change(p, reach_tracked_[static_cast<std::size_t>(q)]));
     const double limit = 0.5 * options.skin;
     if (reach > limit || travel > limit) stale_ = true;
   }
@@ -62,24 +55,30 @@ void PairTracker::moved(double max_displacement2, double step2) {
 const PrunedPairs* PairTracker::near_pairs(const ParticleStore& p, const SimulationOptions& options,
                                            const std::vector<std::uint8_t>& active) {
   const double buffer = options.prune_buffer < 0 ? 0.25 * options.skin : options.prune_buffer;
-  if (!(buffer > 0 && buffer < options.skin) || stale_ || r_at_build_.size() != p.size())
+  if (!(buffer > 0 && buffer < options.skin) || stale_ || r_at_build_.size() != p.size() ||
+      prune_paused_)
     return nullptr;
-  // A pair left out was at least `buffer` from touching at the prune, with each radius taken as the
-  // larger of the radius and the reach sphere's. Since then each particle moved at most
-  // prune_travel_ and grew at most growth_ beyond that radius, so the pair cannot touch while
-  // 2 (prune_travel_ + growth_) <= buffer; the factor below leaves room for round-off.
-  if (!near_valid_ || 2 * (prune_travel_ + growth_) > (1 - 1e-9) * buffer) {
-    near_.prune(p, nlist_, r_at_build_.data(), buffer, active.data());
-    r_pruned_.resize(reach_tracked_.size());
-    for (std::size_t q = 0; q < reach_tracked_.size(); ++q) {
-      const std::uint32_t i = reach_tracked_[q];
-      r_pruned_[q] = std::max(p.radius[i], r_at_build_[i]);
+  // A pair left out was at least `buffer` from touching at the prune, and neither of its particles
+  // was growing (PrunedPairs keeps those pairs; a particle that is not growing keeps its radius).
+  // Since then each particle moved at most prune_travel_, so the pair cannot touch while
+  // 2 prune_travel_ <= buffer; the factor below leaves room for round-off.
+  if (!near_valid_ || 2 * prune_travel_ > (1 - 1e-9) * buffer) {
+    // A prune costs about what visiting the whole list costs in 4 steps (one distance per listed
+    // pair, against the quarter or so of the listed pairs it spares per step on the bench beds):
+    // when particles move fast enough to need one sooner, the whole list is visited until the
+    // next rebuild.
+    if (near_valid_ && steps_since_prune_ < 4) {
+      near_valid_ = false;
+      prune_paused_ = true;
+      return nullptr;
     }
+    near_.prune(p, nlist_, buffer, active.data());
     near_valid_ = true;
     prune_travel_ = 0;
-    growth_ = 0;
+    steps_since_prune_ = 0;
     ++prunes_;
   }
+  ++steps_since_prune_;
   return &near_;
 }
 
@@ -121,6 +120,7 @@ void PairTracker::rebuild(ParticleStore& p, const Walls& walls, SimulationOption
   build_wall_candidates(p, walls, options.skin, wall_state);
   stale_ = false;
   near_valid_ = false;
+  prune_paused_ = false;
   ++rebuilds_;
 }
 
@@ -221,7 +221,7 @@ bool PairTracker::replace(const ParticleStore& p, const Walls& walls, double ski
   for (std::uint32_t s : reach_tracked_)
     if (to_new[s] != NeighborList::none) tracked.push_back(to_new[s]);
   // a fragment's reach sphere at "build" is where it is now at its final size: growth up to that
-  // size then never invalidates the list
+  // size then never invalidates the list; the pruned list keeps all its pairs until the next prune
   for (std::size_t s = n_kept; s < p.size(); ++s) {
     x_build[s] = p.x[s];
     r_build[s] = std::max(p.radius[s], final_radius[p.id[s]]);
@@ -231,7 +231,9 @@ bool PairTracker::replace(const ParticleStore& p, const Walls& walls, double ski
   r_at_build_.swap(r_build);
   reach_tracked_.swap(tracked);
   nlist_.update_in_place(p, to_new, x_at_build_, r_at_build_);
-  near_valid_ = false;
+  // the pruned list follows the pairs: a kept pair stays in or out as it was (its particles moved
+  // no more than before), a new one (of a fragment, growing) is in
+  if (near_valid_) near_.carry(nlist_.kept_from());
   pair_state.gather(nlist_.kept_from());
   // wall candidates: kept ones remapped, each fragment's found at its reach sphere
   std::vector<WallContactRecord> kept;

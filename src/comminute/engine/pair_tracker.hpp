@@ -74,8 +74,9 @@ class PairTracker {
   double reach_margin(const ParticleStore& p, std::size_t i, double skin) const;
 
   // After update(): the pairs the force loop must visit, pruned again when particles may have
-  // moved or grown half the prune buffer since the last prune (pairs flagged in `active` are
-  // kept: the loop ends their contacts); null when the options ask for no pruning.
+  // moved half the prune buffer since the last prune (pairs flagged in `active` are kept: the loop
+  // ends their contacts; so are the pairs of growing particles); null when the options ask for no
+  // pruning.
   const PrunedPairs* near_pairs(const ParticleStore& p, const SimulationOptions& options,
                                 const std::vector<std::uint8_t>& active);
   std::uint64_t prunes() const { return prunes_; }
@@ -128,15 +129,14 @@ class PairTracker {
   std::uint64_t rebuilds_ = 0;
   std::uint64_t appended_since_sort_ = 0;  // fragments appended since the last sort
   double max_disp2_ = 0;
-  // The pruned list: valid until a rebuild or in-place update; the sum of the drifts' largest
-  // displacements since it was made (m, bounds every particle's); the radii it took for the
-  // tracked particles (m, by their place in reach_tracked_) and their largest growth beyond them
-  // (m, from due())
+  // The pruned list: valid until a rebuild (carried through in-place updates); the sum of the
+  // drifts' largest displacements since it was made (m, bounds every particle's); the steps since;
+  // whether pruning waits for the next rebuild (it had to prune again too soon to pay)
   PrunedPairs near_;
   bool near_valid_ = false;
   double prune_travel_ = 0;
-  std::vector<double> r_pruned_;
-  double growth_ = 0;
+  std::uint64_t steps_since_prune_ = 0;
+  bool prune_paused_ = false;
   std::uint64_t prunes_ = 0;
 };
 

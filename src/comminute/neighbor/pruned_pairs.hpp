@@ -16,20 +16,27 @@ namespace comminute {
 
 class PrunedPairs {
  public:
-  // Keeps pair k of `list` when |x_i - x_j| < r_i + r_j + buffer (m), with r the larger of a
-  // particle's radius and its entry in `reach` (the radius it may grow to, one per slot; may be
-  // null), or when keep[k] != 0 (may be null). Ascending pair indices; the same list on any
-  // number of threads.
-  void prune(const ParticleStore& p, const NeighborList& list, const double* reach, double buffer,
+  // Keeps pair k of `list` when |x_i - x_j| < r_i + r_j + buffer (m), when i or j is growing
+  // (pflag::growing: its radius changes), or when keep[k] != 0 (may be null). Ascending pair
+  // indices; the same list on any number of threads.
+  void prune(const ParticleStore& p, const NeighborList& list, double buffer,
              const std::uint8_t* keep);
+  // After the list was updated in place (NeighborList::update_in_place): new pair w stays when it
+  // continues a kept pair (kept_from[w], NeighborList::kept_from()) or is new (none: a pair of an
+  // appended particle, kept whatever its distance). What held for the old pairs holds for them.
+  void carry(const std::vector<std::uint32_t>& kept_from);
   // Indices into the list of the kept pairs, ascending.
   const std::vector<std::uint32_t>& pairs() const { return pairs_; }
   // The positions in pairs() of the kept pairs among the list's pairs [k0, k1).
   std::pair<std::size_t, std::size_t> range(std::size_t k0, std::size_t k1) const;
 
  private:
+  // keeps(k0, k1, part) appends the kept ones of [k0, k1) to part, on each thread its own range;
+  // `out` gets them all, ascending
+  template <class Keeps>
+  void select(std::size_t n, std::vector<std::uint32_t>& out, Keeps keeps);
   std::vector<std::uint32_t> pairs_;
-  std::vector<std::vector<std::uint32_t>> parts_;  // each thread's kept pairs while pruning
+  std::vector<std::vector<std::uint32_t>> parts_;  // each thread's kept pairs while selecting
   std::vector<std::size_t> offsets_;
 };
 

@@ -3,7 +3,7 @@
 // have moved half the buffer (a growing particle keeps all its pairs). A pair left out cannot touch
 // before then, so a run with pruning gives the same bits as one that visits every listed pair: the
 // checks below are exact, and a pair wrongly left out (tried: a trigger that ignores the travel
-// since the prune, a carry that drops the fragments' pairs, a prune that drops a growing
+// since the prune, a pruned list kept through a replacement, a prune that drops a growing
 // particle's pairs) changes them.
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -123,9 +123,9 @@ TEST(PrunedPairs, TwoThreadsGiveTheSameBitsAsTheWholeList) {
 }
 
 TEST(PrunedPairs, BreakageWithGrowingFragmentsGivesTheSameBitsAsTheWholeList) {
-  // Fragments replace their parents in place (the list updated, the pruned list carried along
-  // with every pair of a fragment in: tried, leaving those out changes the bits) and grow to
-  // their final size.
+  // Fragments replace their parents in place and grow to their final size. Pruning pauses at a
+  // replacement until the next rebuild (tried: keeping the pruned list through the update leaves
+  // the fragments' new pairs out and changes the bits), and resumes after each rebuild.
   omp_set_num_threads(1);
   breakage::BreakageModule *ma = nullptr, *mb = nullptr;
   auto pruned = breakage_gas(&ma);

@@ -231,9 +231,11 @@ bool PairTracker::replace(const ParticleStore& p, const Walls& walls, double ski
   r_at_build_.swap(r_build);
   reach_tracked_.swap(tracked);
   nlist_.update_in_place(p, to_new, x_at_build_, r_at_build_);
-  // the pruned list follows the pairs: a kept pair stays in or out as it was (its particles moved
-  // no more than before), a new one (of a fragment, growing) is in
-  if (near_valid_) near_.carry(nlist_.kept_from());
+  // pruning pauses until the next rebuild: replacements come in bursts, one per step, and a
+  // fragment flies fast, so carrying the pruned list through each update (a pass over the list)
+  // and pruning again cost more than the pruned loop saves (bench_breakage, bench/RESULTS.md)
+  near_valid_ = false;
+  prune_paused_ = true;
   pair_state.gather(nlist_.kept_from());
   // wall candidates: kept ones remapped, each fragment's found at its reach sphere
   std::vector<WallContactRecord> kept;

@@ -129,9 +129,9 @@ class PairTracker {
   std::uint64_t rebuilds_ = 0;
   std::uint64_t appended_since_sort_ = 0;  // fragments appended since the last sort
   double max_disp2_ = 0;
-  // The pruned list: valid until a rebuild (carried through in-place updates); the sum of the
-  // drifts' largest displacements since it was made (m, bounds every particle's); the steps since;
-  // whether pruning waits for the next rebuild (it had to prune again too soon to pay)
+  // The pruned list: valid until a rebuild or an in-place update; the sum of the drifts' largest
+  // displacements since it was made (m, bounds every particle's); the steps since; whether pruning
+  // waits for the next rebuild (it had to prune again too soon to pay, or particles were replaced)
   PrunedPairs near_;
   bool near_valid_ = false;
   double prune_travel_ = 0;

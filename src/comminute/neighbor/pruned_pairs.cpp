@@ -48,27 +48,6 @@ void PrunedPairs::prune(const ParticleStore& p, const NeighborList& list, double
          });
 }
 
-void PrunedPairs::carry(const std::vector<std::uint32_t>& kept_from) {
-  // kept_from ascends (the kept pairs in their old order, then `none` for the new ones), so each
-  // thread finds its first old pair among the kept ones by a search, then walks both in step
-  const std::vector<std::uint32_t>& old = pairs_;
-  std::vector<std::uint32_t> next;
-  select(kept_from.size(), next,
-         [&](std::size_t w0, std::size_t w1, std::vector<std::uint32_t>& part) {
-           if (w0 == w1) return;
-           auto q = std::lower_bound(old.begin(), old.end(), kept_from[w0]);
-           for (std::size_t w = w0; w < w1; ++w) {
-             const std::uint32_t from = kept_from[w];
-             if (from != NeighborList::none) {
-               while (q != old.end() && *q < from) ++q;
-               if (q == old.end() || *q != from) continue;
-             }
-             part.push_back(static_cast<std::uint32_t>(w));
-           }
-         });
-  pairs_.swap(next);
-}
-
 std::pair<std::size_t, std::size_t> PrunedPairs::range(std::size_t k0, std::size_t k1) const {
   const auto at = [&](std::size_t k) {
     return static_cast<std::size_t>(std::lower_bound(pairs_.begin(), pairs_.end(), k) -

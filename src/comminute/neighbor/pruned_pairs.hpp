@@ -21,10 +21,6 @@ class PrunedPairs {
   // indices; the same list on any number of threads.
   void prune(const ParticleStore& p, const NeighborList& list, double buffer,
              const std::uint8_t* keep);
-  // After the list was updated in place (NeighborList::update_in_place): new pair w stays when it
-  // continues a kept pair (kept_from[w], NeighborList::kept_from()) or is new (none: a pair of an
-  // appended particle, kept whatever its distance). What held for the old pairs holds for them.
-  void carry(const std::vector<std::uint32_t>& kept_from);
   // Indices into the list of the kept pairs, ascending.
   const std::vector<std::uint32_t>& pairs() const { return pairs_; }
   // The positions in pairs() of the kept pairs among the list's pairs [k0, k1).

@@ -68,8 +68,7 @@ const PrunedPairs* PairTracker::near_pairs(const ParticleStore& p, const Simulat
     // when particles move fast enough to need one sooner, the whole list is visited until the
     // next rebuild.
     if (near_valid_ && steps_since_prune_ < 4) {
-      near_valid_ = false;
-      prune_paused_ = true;
+      pause_pruning();
       return nullptr;
     }
     near_.prune(p, nlist_, buffer, active.data());
@@ -80,6 +79,11 @@ const PrunedPairs* PairTracker::near_pairs(const ParticleStore& p, const Simulat
   }
   ++steps_since_prune_;
   return &near_;
+}
+
+void PairTracker::pause_pruning() {
+  near_valid_ = false;
+  prune_paused_ = true;
 }
 
 void PairTracker::prepare(ParticleStore& p, SimulationOptions& options) {
@@ -231,11 +235,10 @@ bool PairTracker::replace(const ParticleStore& p, const Walls& walls, double ski
   r_at_build_.swap(r_build);
   reach_tracked_.swap(tracked);
   nlist_.update_in_place(p, to_new, x_at_build_, r_at_build_);
-  // pruning pauses until the next rebuild: replacements come in bursts, one per step, and a
-  // fragment flies fast, so carrying the pruned list through each update (a pass over the list)
-  // and pruning again cost more than the pruned loop saves (bench_breakage, bench/RESULTS.md)
-  near_valid_ = false;
-  prune_paused_ = true;
+  // replacements come in bursts, one per step, and a fragment flies fast, so carrying the pruned
+  // list through each update (a pass over the list) and pruning again cost more than the pruned
+  // loop saves (bench_breakage, bench/RESULTS.md)
+  pause_pruning();
   pair_state.gather(nlist_.kept_from());
   // wall candidates: kept ones remapped, each fragment's found at its reach sphere
   std::vector<WallContactRecord> kept;

@@ -112,6 +112,7 @@ class PairTracker {
                            std::vector<std::uint32_t>& elements, std::vector<WallContact>& found,
                            std::vector<WallContactRecord>& into) const;
   double reach_change(const ParticleStore& p, std::size_t i) const;  // |x - x_b| + r - r_b
+  void pause_pruning();  // the whole list is visited until the next rebuild
 
   NeighborList nlist_;
   std::vector<WallContactRecord> wall_candidates_;  // near walls at the last build

@@ -234,6 +234,13 @@ TEST(ContactState, ScratchCopiesOneContactAndLeavesTheStoreAlone) {
   copy.ref().vec3(f.spring) = {9, 9, 9};
   EXPECT_EQ(f.s.at(1).vec3(f.spring), (Vec3{2.0, 2.0, 3.0}));
   EXPECT_EQ(ContactScratch{}.ref().f32(f.overlap), 0.0f);
+  // a scratch kept for many contacts is fresh again after clear() in every slot of the layout
+  ContactScratch kept;
+  kept.ref().vec3(f.spring) = {9, 9, 9};
+  kept.ref().f32(f.overlap) = 5.0f;
+  kept.clear(f.s);
+  EXPECT_EQ(kept.ref().vec3(f.spring), Vec3{});
+  EXPECT_EQ(kept.ref().f32(f.overlap), 0.0f);
 }
 
 TEST(ContactState, CheckpointRoundTripsAndRefusesAnotherListSize) {

@@ -11,6 +11,7 @@
 
 #include "comminute/bonds/bond_law.hpp"
 #include "comminute/bonds/bond_step.hpp"
+#include "comminute/core/vector_clones.hpp"
 
 namespace comminute::bonds {
 namespace {
@@ -201,13 +202,7 @@ StateColumns columns_at(BondStates& s, std::size_t b) {
 }
 
 // The arithmetic of bonds b0 .. b0 + n (vectorised; AVX-512 and AVX2 versions besides the baseline
-// one, chosen once by the processor: the same operations, so the same results). A bond that keeps
-// its state has it written back unchanged.
-#if defined(COMMINUTE_AVX2_CLONES)
-#define COMMINUTE_VECTOR_CLONES [[gnu::target_clones("avx512f", "avx2", "default")]]
-#else
-#define COMMINUTE_VECTOR_CLONES
-#endif
+// one, core/vector_clones.hpp). A bond that keeps its state has it written back unchanged.
 COMMINUTE_VECTOR_CLONES void advance_batch(const ParallelBond& bond_law, Batch& __restrict t,
                                            StateColumns c, std::size_t n, double dt) {
   const ParallelBond law = bond_law;  // its constants in a copy of its own: apart from the arrays

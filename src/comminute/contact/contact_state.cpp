@@ -87,6 +87,12 @@ ContactScratch::ContactScratch(const ContactStateStore& store, std::size_t k) : 
   for (std::size_t s = 0; s < store.f64_.size(); ++s) f64_[s] = store.f64_[s].data[k];
 }
 
+void ContactScratch::clear(const ContactStateStore& layout) {
+  std::fill_n(vec3_.begin(), layout.vec3_.size(), Vec3{});
+  std::fill_n(f32_.begin(), layout.f32_.size(), 0.0f);
+  std::fill_n(f64_.begin(), layout.f64_.size(), 0.0);
+}
+
 void ContactStateStore::clear(std::size_t k) {
   active[k] = 0;
   for (auto& c : vec3_) c.data[k] = Vec3{};

@@ -52,6 +52,9 @@ class ContactScratch {
   ContactScratch(const ContactScratch&) = delete;
   ContactScratch& operator=(const ContactScratch&) = delete;
   StateRef ref() const { return {&slots_, 0}; }
+  // Fresh again (zero) in the slots `layout` declares: one scratch kept for many evaluations,
+  // cheaper than a new one, which zeroes every slot it could hold.
+  void clear(const ContactStateStore& layout);
 
  private:
   std::array<Vec3, Slots::max_slots> vec3_{};

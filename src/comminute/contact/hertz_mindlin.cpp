@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "comminute/contact/tangential_friction.hpp"
+#include "comminute/core/vector_clones.hpp"
 
 namespace comminute {
 namespace {
@@ -37,13 +38,18 @@ class HertzMindlin final : public ContactLaw {
                     s.vec3(slots_.spring), slots_.flag(s), out);
   }
 
+  // compute() for every contact of the batch: batch(), in its AVX-512, AVX2 or baseline version
+  // (core/vector_clones.hpp; a virtual function cannot have versions)
+  void compute_batch(const ContactBatch& b) const override { batch(b); }
+
+ private:
   // The contacts of a batch in stages, each a loop over up to kStage contacts: the square roots of
   // the contact radius, of the dashpot and of the spring's rotation each in a loop of their own
   // (independent, so they overlap and vectorise instead of each contact waiting on its own chain
   // of division and roots), and the arithmetic of a sticking contact's friction in
   // structure-of-arrays loops; a contact that slides or whose dashpot is capped is redone by
   // coulomb_rotated(). Every contact goes through the same operations as compute().
-  void compute_batch(const ContactBatch& b) const override {
+  COMMINUTE_VECTOR_CLONES void batch(const ContactBatch& b) const {
     constexpr std::size_t kStage = 64;
     std::array<double, kStage> arg, a, root, before, after, factor;
     std::array<Vec3, kStage> xi;
@@ -125,6 +131,8 @@ class HertzMindlin final : public ContactLaw {
     }
   }
 
+
+ public:
   double normal_stiffness(const PairParameters& p, double r, double, double delta) const override {
     return 2.0 * p.effective_modulus * std::sqrt(r * delta);  // dF/dδ = 2 E* sqrt(R* δ)
   }

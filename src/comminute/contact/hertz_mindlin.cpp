@@ -131,7 +131,6 @@ class HertzMindlin final : public ContactLaw {
     }
   }
 
-
  public:
   double normal_stiffness(const PairParameters& p, double r, double, double delta) const override {
     return 2.0 * p.effective_modulus * std::sqrt(r * delta);  // dF/dδ = 2 E* sqrt(R* δ)

@@ -20,6 +20,212 @@ struct Touching {                   // a touching pair of a run: its particles a
 
 }  // namespace
 
+// What every thread of run() reads: the step's arrays, the pipeline and the state's columns.
+struct PairForceLoop::Shared {
+  ParticleStore& p;
+  const MaterialTable& materials;
+  const NeighborList& pairs;
+  const PrunedPairs* near;
+  const ContactPipeline& pipeline;
+  ContactStateStore& state;
+  double dt;
+  const CollisionRecord* record;
+  ContactStress* cs;
+  bool armed, want_list;
+  double threshold;
+  const Slots& slots;
+  bool rolling;
+  std::uint8_t* active;
+  std::array<const char*, 4> columns;  // the contact state's columns and their widths
+  std::array<std::size_t, 4> widths;
+  std::size_t ncolumns;
+};
+
+void PairForceLoop::thread_pairs(const Shared& s, int t) {
+  ParticleStore& p = s.p;
+  const MaterialTable& materials = s.materials;
+  const NeighborList& pairs = s.pairs;
+  const PrunedPairs* near = s.near;
+  const ContactPipeline& pipeline = s.pipeline;
+  ContactStateStore& state = s.state;
+  const double dt = s.dt;
+  const CollisionRecord* record = s.record;
+  ContactStress* cs = s.cs;
+  const bool armed = s.armed, want_list = s.want_list, rolling = s.rolling;
+  const double threshold = s.threshold;
+  const Slots& slots = s.slots;
+  std::uint8_t* active = s.active;
+  const auto& columns = s.columns;
+  const auto& widths = s.widths;
+  const std::size_t ncolumns = s.ncolumns;
+  const auto& rows = pairs.rows();
+  Vec3* F = p.f.data();
+  Vec3* T = p.t.data();
+  const Vec3 *X = p.x.data(), *V = p.v.data(), *W = p.w.data();
+  const double *R = p.radius.data(), *M = p.mass.data(), *I = p.inertia.data();
+  const std::uint16_t* mat = p.material.data();
+  const std::uint32_t *first = pairs.first.data(), *second = pairs.second.data();
+  const std::uint32_t own0 = owner_begin_[t], own1 = owner_begin_[t + 1];
+  auto& queued = cross_[t];
+  queued.clear();
+  auto& separated = ended_[t];
+  separated.clear();
+  StressPart* sp = cs ? &stress_[t] : nullptr;
+  if (sp) {
+    sp->cross.clear();
+    sp->starts.clear();
+    sp->contacts.clear();
+  }
+  EnergyTally tl;  // local: threads' tallies side by side in memory would share a cache line
+  const std::size_t k0 = rows[own0], k1 = rows[own1];
+  // the touching pairs are gathered into runs of up to kRun contacts, evaluated in one call
+  // (the law inlined in its loop), then their forces are added in pair order
+  std::array<ContactKinematics, kRun> ck;
+  std::array<const PairParameters*, kRun> pp;
+  std::array<std::size_t, kRun> index;
+  std::array<ContactForces, kRun> out;
+  std::array<Touching, kRun> who;
+  for (auto& c : ck) c.dt = dt;
+  std::fill(out.begin(), out.end(), ContactForces{});
+  std::array<Vec3, kRun> gap;  // x_i - x_j of the gathered pairs
+  std::array<double, kRun> gap2, reach, dist;
+  std::size_t nrun = 0;
+  // (the lambdas always inlined: each version of thread_pairs gets its own copy)
+  auto flush = [&]() __attribute__((always_inline)) {
+    if (nrun == 0) return;
+    pipeline.evaluate(ContactBatch{nrun, ck.data(), pp.data(), index.data(), &slots, out.data()});
+    // particle i's force and torque stay in registers over its consecutive contacts (the list
+    // is sorted by i; j != i, so no other write of the run touches them): the same sums in the
+    // same order as adding to F[i], T[i] contact by contact
+    std::uint32_t held = who[0].i;
+    Vec3 fi = F[held], ti = T[held];
+    for (std::size_t c = 0; c < nrun; ++c) {
+      const ContactForces& o = out[c];
+      const Vec3& nrm = ck[c].normal;
+      // by reference: a copy of the record stalls on its two stores
+      const auto& [i, j, ri, rj] = who[c];
+      if (i != held) {
+        F[held] = fi;
+        T[held] = ti;
+        held = i;
+        fi = F[i];
+        ti = T[i];
+      }
+      tl.add(o);
+      const Vec3 fc = o.normal_force * nrm + o.tangential_force;
+      fi += fc;
+      ti += o.rolling_torque - ri * cross(nrm, o.tangential_force);
+      const Vec3 tj = -(o.rolling_torque + rj * cross(nrm, o.tangential_force));
+      if (j >= own0 && j < own1) {
+        F[j] -= fc;
+        T[j] += tj;
+      } else {
+        queued.push_back({j, -fc, tj});
+      }
+      if (armed) {  // Love–Weber: l_i = -ri n, l_j = +rj n, forces ±fc
+        const std::uint32_t lb = o.normal_force > threshold ? 1 : 0;
+        add_sym_outer(cs->moment[i], fc, nrm, -ri);
+        cs->load_bearing[i] += lb;
+        if (j >= own0 && j < own1) {
+          add_sym_outer(cs->moment[j], fc, nrm, -rj);
+          cs->load_bearing[j] += lb;
+        } else {
+          CrossMoment cm{j, lb, {}};
+          add_sym_outer(cm.moment, fc, nrm, -rj);
+          sp->cross.push_back(cm);
+        }
+        if (want_list)
+          sp->contacts.push_back({i, static_cast<std::int32_t>(j), X[i], X[j], fc, o.normal_force});
+      }
+    }
+    F[held] = fi;
+    T[held] = ti;
+    std::fill_n(out.begin(), nrun, ContactForces{});
+    nrun = 0;
+  };
+  // the pairs visited, by position m: the pruned list's (pair_at(m) = its m-th pair), or all of
+  // [k0, k1) (pair_at(m) = m)
+  const auto visit = [&](auto pair_at, std::size_t m0, std::size_t m1)
+      __attribute__((always_inline)) {
+    for (std::size_t m = m0; m < m1;) {
+      // 1. gather the next run of touching pairs without a branch per pair (whether a pair
+      // touches is unpredictable in a dense bed); a pair that separated is rare
+      for (; m < m1 && nrun < kRun; ++m) {
+        const std::size_t k = pair_at(m);
+        const std::uint32_t i = first[k], j = second[k];
+        // the other particles are scattered in memory: their positions are asked for kAhead
+        // pairs early, the fields read later (kinematics, forces) as soon as the pair is seen
+        const std::uint32_t ja = second[pair_at(std::min(m + kAhead, m1 - 1))];
+        __builtin_prefetch(&X[ja]);
+        __builtin_prefetch(&R[ja]);
+        __builtin_prefetch(&V[j]);
+        __builtin_prefetch(&W[j]);
+        __builtin_prefetch(&M[j]);
+        __builtin_prefetch(&mat[j]);
+        __builtin_prefetch(&F[j], 1);
+        __builtin_prefetch(&T[j], 1);
+        for (std::size_t c = 0; c < ncolumns; ++c)
+          __builtin_prefetch(columns[c] + k * widths[c], 1);
+        const Vec3 d = X[i] - X[j];
+        const double rsum = R[i] + R[j];
+        const double dist2 = norm2(d);
+        const bool touches = dist2 < rsum * rsum;
+        gap[nrun] = d;
+        gap2[nrun] = dist2;
+        reach[nrun] = rsum;
+        index[nrun] = k;
+        nrun += touches ? 1 : 0;
+        if (!touches & (active[k] != 0)) {  // the bodies separated: the contact's state is gone
+          if (record) separated.push_back({i, j, false, record->totals(state.at(k))});
+          state.clear(k);
+        }
+      }
+      // 2. the kinematics of the run's contacts; the distances' roots first, in a loop of their
+      // own (independent roots overlap instead of each contact waiting on its own)
+      for (std::size_t c = 0; c < nrun; ++c) dist[c] = std::sqrt(gap2[c]);
+      for (std::size_t c = 0; c < nrun; ++c) {
+        const std::size_t kc = index[c];
+        const std::uint32_t i = first[kc], j = second[kc];
+        if (sp && !active[kc]) sp->starts.push_back({i, static_cast<std::int32_t>(j)});
+        active[kc] = 1;
+        const double rsum = reach[c];
+        const Vec3 nrm = gap[c] / dist[c];
+        const double overlap = rsum - dist[c];
+        const double ri = R[i] - 0.5 * overlap, rj = R[j] - 0.5 * overlap;
+        const Vec3 vrel = V[i] - V[j] - cross(W[i], ri * nrm) - cross(W[j], rj * nrm);
+        const double vn = dot(vrel, nrm);
+        ContactKinematics& ct = ck[c];
+        ct.normal = nrm;
+        ct.overlap = overlap;
+        ct.overlap_rate = -vn;
+        ct.tangential_velocity = vrel - vn * nrm;
+        ct.effective_radius = R[i] * R[j] / rsum;
+        ct.effective_mass = M[i] * M[j] / (M[i] + M[j]);
+        if (rolling) {  // read by the rolling models only
+          ct.relative_angular_velocity = W[i] - W[j];
+          ct.effective_inertia = I[i] * I[j] / (I[i] + I[j]);
+        }
+        pp[c] = &materials.pair(mat[i], mat[j]);
+        who[c] = {i, j, ri, rj};
+      }
+      // 3. the law and the forces
+      if (nrun == kRun || m == m1) flush();
+    }
+  };
+  if (near != nullptr) {
+    const auto [m0, m1] = near->range(k0, k1);
+    const std::uint32_t* kept = near->pairs().data();
+    visit(
+        [kept](std::size_t m)
+            __attribute__((always_inline)) { return static_cast<std::size_t>(kept[m]); },
+        m0, m1);
+  } else {
+    visit(
+        [](std::size_t m) __attribute__((always_inline)) { return m; }, k0, k1);
+  }
+  tally_[t] = tl;
+}
+
 void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const NeighborList& pairs,
                         const PrunedPairs* near, const ContactPipeline& pipeline,
                         ContactStateStore& state, double dt, EnergyLedger& ledger, double& elastic,
@@ -27,7 +233,6 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
   const std::size_t n = p.size();
   const std::size_t npairs = pairs.size();
   const int nt = npairs >= 2 * kParallelMin ? max_threads() : 1;
-  const auto& rows = pairs.rows();
   // the threads split the pairs by cost (engine/pair_split.hpp) at the start of their region: the
   // cost of each block of pairs is summed by the threads together, then one places the split
   auto& split = split_;
@@ -64,6 +269,9 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
   add_columns(slots.vec3, sizeof(Vec3));
   add_columns(slots.f64, sizeof(double));
   add_columns(slots.f32, sizeof(float));
+  const Shared shared{p,     materials, pairs,  near,    pipeline,  state,
+                      dt,    record,    cs,     armed,   want_list, threshold,
+                      slots, rolling,   active, columns, widths,    ncolumns};
 #pragma omp parallel num_threads(nt)
   {
     const int t = thread_id();
@@ -80,166 +288,7 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
               split[u] < npairs ? pairs.first[split[u]] : static_cast<std::uint32_t>(n);
       }  // (the threads wait here for the split)
     }
-    Vec3* F = p.f.data();
-    Vec3* T = p.t.data();
-    const Vec3 *X = p.x.data(), *V = p.v.data(), *W = p.w.data();
-    const double *R = p.radius.data(), *M = p.mass.data(), *I = p.inertia.data();
-    const std::uint16_t* mat = p.material.data();
-    const std::uint32_t *first = pairs.first.data(), *second = pairs.second.data();
-    const std::uint32_t own0 = owner_begin[t], own1 = owner_begin[t + 1];
-    auto& queued = cross_[t];
-    queued.clear();
-    auto& separated = ended_[t];
-    separated.clear();
-    StressPart* sp = cs ? &stress_[t] : nullptr;
-    if (sp) {
-      sp->cross.clear();
-      sp->starts.clear();
-      sp->contacts.clear();
-    }
-    EnergyTally tl;  // local: threads' tallies side by side in memory would share a cache line
-    const std::size_t k0 = rows[own0], k1 = rows[own1];
-    // the touching pairs are gathered into runs of up to kRun contacts, evaluated in one call
-    // (the law inlined in its loop), then their forces are added in pair order
-    std::array<ContactKinematics, kRun> ck;
-    std::array<const PairParameters*, kRun> pp;
-    std::array<std::size_t, kRun> index;
-    std::array<ContactForces, kRun> out;
-    std::array<Touching, kRun> who;
-    for (auto& c : ck) c.dt = dt;
-    std::fill(out.begin(), out.end(), ContactForces{});
-    std::array<Vec3, kRun> gap;  // x_i - x_j of the gathered pairs
-    std::array<double, kRun> gap2, reach, dist;
-    std::size_t nrun = 0;
-    auto flush = [&] {
-      if (nrun == 0) return;
-      pipeline.evaluate(ContactBatch{nrun, ck.data(), pp.data(), index.data(), &slots, out.data()});
-      // particle i's force and torque stay in registers over its consecutive contacts (the list
-      // is sorted by i; j != i, so no other write of the run touches them): the same sums in the
-      // same order as adding to F[i], T[i] contact by contact
-      std::uint32_t held = who[0].i;
-      Vec3 fi = F[held], ti = T[held];
-      for (std::size_t c = 0; c < nrun; ++c) {
-        const ContactForces& o = out[c];
-        const Vec3& nrm = ck[c].normal;
-        // by reference: a copy of the record stalls on its two stores
-        const auto& [i, j, ri, rj] = who[c];
-        if (i != held) {
-          F[held] = fi;
-          T[held] = ti;
-          held = i;
-          fi = F[i];
-          ti = T[i];
-        }
-        tl.add(o);
-        const Vec3 fc = o.normal_force * nrm + o.tangential_force;
-        fi += fc;
-        ti += o.rolling_torque - ri * cross(nrm, o.tangential_force);
-        const Vec3 tj = -(o.rolling_torque + rj * cross(nrm, o.tangential_force));
-        if (j >= own0 && j < own1) {
-          F[j] -= fc;
-          T[j] += tj;
-        } else {
-          queued.push_back({j, -fc, tj});
-        }
-        if (armed) {  // Love–Weber: l_i = -ri n, l_j = +rj n, forces ±fc
-          const std::uint32_t lb = o.normal_force > threshold ? 1 : 0;
-          add_sym_outer(cs->moment[i], fc, nrm, -ri);
-          cs->load_bearing[i] += lb;
-          if (j >= own0 && j < own1) {
-            add_sym_outer(cs->moment[j], fc, nrm, -rj);
-            cs->load_bearing[j] += lb;
-          } else {
-            CrossMoment cm{j, lb, {}};
-            add_sym_outer(cm.moment, fc, nrm, -rj);
-            sp->cross.push_back(cm);
-          }
-          if (want_list)
-            sp->contacts.push_back(
-                {i, static_cast<std::int32_t>(j), X[i], X[j], fc, o.normal_force});
-        }
-      }
-      F[held] = fi;
-      T[held] = ti;
-      std::fill_n(out.begin(), nrun, ContactForces{});
-      nrun = 0;
-    };
-    // the pairs visited, by position m: the pruned list's (pair_at(m) = its m-th pair), or all of
-    // [k0, k1) (pair_at(m) = m)
-    const auto visit = [&](auto pair_at, std::size_t m0, std::size_t m1) {
-      for (std::size_t m = m0; m < m1;) {
-        // 1. gather the next run of touching pairs without a branch per pair (whether a pair
-        // touches is unpredictable in a dense bed); a pair that separated is rare
-        for (; m < m1 && nrun < kRun; ++m) {
-          const std::size_t k = pair_at(m);
-          const std::uint32_t i = first[k], j = second[k];
-          // the other particles are scattered in memory: their positions are asked for kAhead
-          // pairs early, the fields read later (kinematics, forces) as soon as the pair is seen
-          const std::uint32_t ja = second[pair_at(std::min(m + kAhead, m1 - 1))];
-          __builtin_prefetch(&X[ja]);
-          __builtin_prefetch(&R[ja]);
-          __builtin_prefetch(&V[j]);
-          __builtin_prefetch(&W[j]);
-          __builtin_prefetch(&M[j]);
-          __builtin_prefetch(&mat[j]);
-          __builtin_prefetch(&F[j], 1);
-          __builtin_prefetch(&T[j], 1);
-          for (std::size_t c = 0; c < ncolumns; ++c)
-            __builtin_prefetch(columns[c] + k * widths[c], 1);
-          const Vec3 d = X[i] - X[j];
-          const double rsum = R[i] + R[j];
-          const double dist2 = norm2(d);
-          const bool touches = dist2 < rsum * rsum;
-          gap[nrun] = d;
-          gap2[nrun] = dist2;
-          reach[nrun] = rsum;
-          index[nrun] = k;
-          nrun += touches ? 1 : 0;
-          if (!touches & (active[k] != 0)) {  // the bodies separated: the contact's state is gone
-            if (record) separated.push_back({i, j, false, record->totals(state.at(k))});
-            state.clear(k);
-          }
-        }
-        // 2. the kinematics of the run's contacts; the distances' roots first, in a loop of their
-        // own (independent roots overlap instead of each contact waiting on its own)
-        for (std::size_t c = 0; c < nrun; ++c) dist[c] = std::sqrt(gap2[c]);
-        for (std::size_t c = 0; c < nrun; ++c) {
-          const std::size_t kc = index[c];
-          const std::uint32_t i = first[kc], j = second[kc];
-          if (sp && !active[kc]) sp->starts.push_back({i, static_cast<std::int32_t>(j)});
-          active[kc] = 1;
-          const double rsum = reach[c];
-          const Vec3 nrm = gap[c] / dist[c];
-          const double overlap = rsum - dist[c];
-          const double ri = R[i] - 0.5 * overlap, rj = R[j] - 0.5 * overlap;
-          const Vec3 vrel = V[i] - V[j] - cross(W[i], ri * nrm) - cross(W[j], rj * nrm);
-          const double vn = dot(vrel, nrm);
-          ContactKinematics& ct = ck[c];
-          ct.normal = nrm;
-          ct.overlap = overlap;
-          ct.overlap_rate = -vn;
-          ct.tangential_velocity = vrel - vn * nrm;
-          ct.effective_radius = R[i] * R[j] / rsum;
-          ct.effective_mass = M[i] * M[j] / (M[i] + M[j]);
-          if (rolling) {  // read by the rolling models only
-            ct.relative_angular_velocity = W[i] - W[j];
-            ct.effective_inertia = I[i] * I[j] / (I[i] + I[j]);
-          }
-          pp[c] = &materials.pair(mat[i], mat[j]);
-          who[c] = {i, j, ri, rj};
-        }
-        // 3. the law and the forces
-        if (nrun == kRun || m == m1) flush();
-      }
-    };
-    if (near != nullptr) {
-      const auto [m0, m1] = near->range(k0, k1);
-      const std::uint32_t* kept = near->pairs().data();
-      visit([kept](std::size_t m) { return static_cast<std::size_t>(kept[m]); }, m0, m1);
-    } else {
-      visit([](std::size_t m) { return m; }, k0, k1);
-    }
-    tally[t] = tl;
+    thread_pairs(shared, t);
   }
   for (const auto& list : cross_)
     for (const auto& c : list) {

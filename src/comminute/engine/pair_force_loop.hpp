@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "comminute/contact/contact_state.hpp"
+#include "comminute/core/vector_clones.hpp"
 #include "comminute/engine/contact_pipeline.hpp"
 #include "comminute/engine/ended_contact.hpp"
 #include "comminute/engine/energy_tally.hpp"
@@ -33,6 +34,12 @@ class PairForceLoop {
            double dt, EnergyLedger& ledger, double& elastic, std::vector<EndedContact>& ended);
 
  private:
+  struct Shared;  // what every thread of run() reads (pair_force_loop.cpp)
+  // One thread's share of run(): the pairs owned by particles [owner_begin_[t],
+  // owner_begin_[t + 1]), or the pruned ones among them. In AVX-512, AVX2 and baseline versions
+  // (core/vector_clones.hpp).
+  COMMINUTE_VECTOR_CLONES void thread_pairs(const Shared& s, int t);
+
   struct CrossForce {  // a pair's share for a particle owned by another thread
     std::uint32_t particle;
     Vec3 force, torque;

@@ -13,13 +13,12 @@ class Simulation;
 namespace comminute::breakage {
 
 // The contact model evaluated at rest between sphere i (radius, mass, material) and a sphere
-// (r_j > 0) or a wall (r_j = 0) at `overlap` along `normal`, on a copy of the contact's state
-// (fresh by default): nothing slips or advances. Gives the forces and energies a contact holds in
-// that state.
+// (r_j > 0) or a wall (r_j = 0) at `overlap` along `normal`, on a copy of the contact's state (or
+// a fresh one): nothing slips or advances. Gives the forces and energies a contact holds in that
+// state.
 ContactForces contact_at_rest(const Simulation& sim, double overlap, double r_i, double m_i,
                               std::uint16_t a, double r_j, double m_j, std::uint16_t b,
-                              const Vec3& normal = {0, 0, 1},
-                              const ContactScratch& state = ContactScratch{});
+                              const Vec3& normal, const ContactScratch& state);
 
 // Normal elastic energy (J) of a fresh contact with overlap `overlap` (0 when not touching).
 double overlap_energy(const Simulation& sim, double overlap, double r_i, double m_i,

@@ -46,6 +46,7 @@ class FragmentGrowth {
   std::vector<double> limit_, r_before_;
   std::vector<std::uint8_t> state_;
   std::vector<std::vector<std::uint32_t>> growing_pairs_;  // per thread: pairs with a growing one
+  std::vector<std::uint32_t> hit_pairs_;                   // all of them, in list order
 };
 
 }  // namespace comminute::breakage

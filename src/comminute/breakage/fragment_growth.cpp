@@ -7,6 +7,7 @@
 
 #include "comminute/breakage/breakage_ledger.hpp"
 #include "comminute/breakage/contact_at_rest.hpp"
+#include "comminute/breakage/parallel_filter.hpp"
 #include "comminute/breakage/placement/fragment_placement.hpp"
 #include "comminute/core/parallel.hpp"
 #include "comminute/engine/parallel_threshold.hpp"
@@ -42,36 +43,12 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
     r_before[i] = p.radius[i];
   }
   const auto& nl = sim.pairs();
-  // The pairs with a growing particle, in list order. Each thread scans its range of the list
-  // without a branch per pair (about a third of the pairs qualify, in no predictable pattern);
-  // the ranges are then joined. Only these pairs bound the growth and carry growth energy.
-  const int nt = nl.size() >= kScatterMin ? max_threads() : 1;
-  auto& part = growing_pairs_;
-  part.resize(static_cast<std::size_t>(nt));
-  std::vector<std::size_t> offset(static_cast<std::size_t>(nt) + 1, 0);
+  // The pairs with a growing particle, in list order (a third or more of them): only these bound
+  // the growth and carry growth energy.
   std::vector<std::uint32_t>& hits = hit_pairs_;
-#pragma omp parallel num_threads(nt)
-  {
-    const auto t = static_cast<std::size_t>(thread_id());
-    const std::size_t k0 = nl.size() * t / static_cast<std::size_t>(nt),
-                      k1 = nl.size() * (t + 1) / static_cast<std::size_t>(nt);
-    std::vector<std::uint32_t>& mine = part[t];  // only grows: no fill of its tail each step
-    if (mine.size() < k1 - k0) mine.resize(k1 - k0);
-    std::size_t c = 0;
-    for (std::size_t k = k0; k < k1; ++k) {
-      mine[c] = static_cast<std::uint32_t>(k);
-      c += (state[nl.first[k]] | state[nl.second[k]]) != 0 ? 1 : 0;
-    }
-    offset[t + 1] = c;
-#pragma omp barrier
-#pragma omp single
-    {
-      for (std::size_t u = 0; u < part.size(); ++u) offset[u + 1] += offset[u];
-      hits.resize(offset.back());
-    }
-    std::copy_n(mine.begin(), offset[t + 1] - offset[t],
-                hits.begin() + static_cast<std::ptrdiff_t>(offset[t]));
-  }
+  parallel_select(
+      nl.size(), [&](std::size_t k) { return (state[nl.first[k]] | state[nl.second[k]]) != 0; },
+      hits, select_parts_);
   parallel_scatter(
       hits.size(), limit, std::numeric_limits<double>::infinity(),
       [&](std::size_t m, std::vector<double>& lim) {
@@ -105,12 +82,19 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
     std::size_t completed = 0;  // fragments that reached full size
     bool rebuild = false;       // some fragment used up its reach margin
   };
+  // the growing fragments not blocked by a neighbour already (the others do not grow this step;
+  // this spares their wall look-ups), shared evenly between the threads: fragments are appended
+  // at the end of the store, so a split of the slots would hand most of them to the last thread
+  std::vector<std::uint32_t>& free = free_slots_;
+  parallel_select(
+      p.owned(),
+      [&](std::size_t i) { return (state[i] & was_growing) && !(limit[i] <= p.radius[i]); }, free,
+      select_parts_);
   std::vector<GrowthTally> tally(1);
   parallel_scatter(
-      p.owned(), tally, GrowthTally{},
-      [&](std::size_t i, std::vector<GrowthTally>& acc) {
-        // blocked by a neighbour already: no growth this step (spares the wall look-ups)
-        if (!(p.flags[i] & pflag::growing) || limit[i] <= p.radius[i]) return;
+      free.size(), tally, GrowthTally{},
+      [&](std::size_t m, std::vector<GrowthTally>& acc) {
+        const std::size_t i = free[m];
         thread_local std::vector<WallContact> found;
         for (const auto& w : sim.walls) {
           found.clear();

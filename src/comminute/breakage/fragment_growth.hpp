@@ -45,8 +45,9 @@ class FragmentGrowth {
   // fresh pages each step); filled on all threads
   std::vector<double> limit_, r_before_;
   std::vector<std::uint8_t> state_;
-  std::vector<std::vector<std::uint32_t>> growing_pairs_;  // per thread: pairs with a growing one
-  std::vector<std::uint32_t> hit_pairs_;                   // all of them, in list order
+  std::vector<std::uint32_t> hit_pairs_;   // pairs with a growing particle, in list order
+  std::vector<std::uint32_t> free_slots_;  // growing particles with room to grow, ascending
+  std::vector<std::vector<std::uint32_t>> select_parts_;  // per thread, for parallel_select
 };
 
 }  // namespace comminute::breakage

@@ -71,7 +71,7 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
           lim[j] = std::min(lim[j], radius_allowed(p.x[j], target[j], {p.x[i], p.radius[i]}, eps));
         }
       },
-      [](double a, double b) { return std::min(a, b); });
+      [](double a, double b) { return std::min(a, b); }, &limit_copies_);
   // a ghost's neighbours bound its owner's growth (periodic boundaries)
   for (std::size_t s = p.owned(); s < n; ++s)
     limit[p.owner_of(s)] = std::min(limit[p.owner_of(s)], limit[s]);

@@ -48,6 +48,7 @@ class FragmentGrowth {
   std::vector<std::uint32_t> hit_pairs_;   // pairs with a growing particle, in list order
   std::vector<std::uint32_t> free_slots_;  // growing particles with room to grow, ascending
   std::vector<std::vector<std::uint32_t>> select_parts_;  // per thread, for parallel_select
+  std::vector<std::vector<double>> limit_copies_;         // other threads' copies of limit_
 };
 
 }  // namespace comminute::breakage

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "comminute/breakage/parallel_filter.hpp"
 #include "comminute/core/parallel.hpp"
 #include "comminute/engine/parallel_threshold.hpp"
 #include "comminute/engine/simulation.hpp"
@@ -58,10 +59,14 @@ void StressingEvents::gather_loads(const Simulation& sim) {
   const auto& nl = sim.pairs();
   const ContactStateStore& pairs = sim.pair_state();
   const LoadingRecord& loading = *sim.contacts().loading();
+  // the pairs in contact (in a bed of fragments a minority of the list, in no predictable order)
+  std::vector<std::uint32_t>& touching = touching_;
+  parallel_select(
+      nl.size(), [&](std::size_t k) { return pairs.active[k] != 0; }, touching, select_parts_);
   parallel_scatter(
-      nl.size(), contact_load_, ContactLoad{},
-      [&](std::size_t k, std::vector<ContactLoad>& acc) {
-        if (!pairs.active[k]) return;
+      touching.size(), contact_load_, ContactLoad{},
+      [&](std::size_t m, std::vector<ContactLoad>& acc) {
+        const std::uint32_t k = touching[m];
         const std::uint32_t i = nl.first[k], j = nl.second[k];
         const StateRef h = pairs.at(k);
         const std::size_t a = p.material[i], b = p.material[j];
@@ -81,7 +86,8 @@ void StressingEvents::gather_loads(const Simulation& sim) {
       [](ContactLoad x, const ContactLoad& y) {
         return ContactLoad{x.work + y.work, x.force + y.force, std::max(x.largest, y.largest),
                            x.approach + y.approach};
-      });
+      },
+      &load_copies_);
   // a ghost's contacts load its owner (periodic boundaries)
   for (std::size_t s = p.owned(); s < n; ++s) {
     ContactLoad& o = contact_load_[p.owner_of(s)];

@@ -64,6 +64,11 @@ class StressingEvents {
     double of(ForceMeasure m) const { return m == ForceMeasure::contact_sum ? force : largest; }
   };
   std::vector<ContactLoad> contact_load_;  // per slot, scratch
+  // scratch of gather_loads, kept between steps: the other threads' copies of contact_load_, the
+  // pairs in contact and parallel_select's parts
+  std::vector<std::vector<ContactLoad>> load_copies_;
+  std::vector<std::uint32_t> touching_;
+  std::vector<std::vector<std::uint32_t>> select_parts_;
   // What one range of particles hands on after assess_range, in slot order.
   struct AssessOutcome {
     std::uint64_t ended = 0;                  // events that ended (broken or not)

@@ -35,17 +35,21 @@ inline void flush_denormals_to_zero() {
 // thread order, so the same thread count always gives the same result. Small loops run serially.
 // Each thread allocates and fills its own copy inside the parallel region: the fill (and the
 // first touch of its pages) is not a serial pass of the calling thread.
-// Thread t of nt takes [n t / nt, n (t + 1) / nt); nt = 1 below kScatterMin iterations.
+// Thread t of nt takes [n t / nt, n (t + 1) / nt); nt = 1 below kScatterMin iterations. A caller
+// that scatters every step passes `kept`, where the copies stay between calls (no fresh pages to
+// fault in each step).
 inline constexpr std::size_t kScatterMin = 8192;
 template <class T, class Body, class Combine>
 void parallel_scatter(std::size_t n, std::vector<T>& out, const T& identity, Body&& body,
-                      Combine&& combine) {
+                      Combine&& combine, std::vector<std::vector<T>>* kept = nullptr) {
   const int nt = n >= kScatterMin ? max_threads() : 1;
   if (nt == 1) {
     for (std::size_t k = 0; k < n; ++k) body(k, out);
     return;
   }
-  std::vector<std::vector<T>> copies(static_cast<std::size_t>(nt - 1));
+  std::vector<std::vector<T>> local;
+  std::vector<std::vector<T>>& copies = kept ? *kept : local;
+  copies.resize(static_cast<std::size_t>(nt - 1));
 #pragma omp parallel num_threads(nt)
   {
     const int t = thread_id();

@@ -55,9 +55,13 @@ void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
     }
     std::unordered_map<std::size_t, std::vector<Neighbour>> around;
     const auto& nl = sim.pairs();
-    // a slot of the list may be a periodic ghost (no longer in the store): its owner stands in
+    // 1 for a parent's slot of the list; a slot of the list may be a periodic ghost (no longer in
+    // the store): its owner stands in. The scan of the list then reads one byte per slot.
+    std::vector<std::uint8_t> parent_slot(p.owned() + sim.ghost_count(), 0);
+    for (std::size_t s = 0; s < parent_slot.size(); ++s)
+      parent_slot[s] = batch[s < p.owned() ? s : sim.slot_owner(s)] != 0 ? 1 : 0;
     const auto touches_parent = [&](std::size_t k) {
-      return batch[sim.slot_owner(nl.first[k])] != 0 || batch[sim.slot_owner(nl.second[k])] != 0;
+      return (parent_slot[nl.first[k]] | parent_slot[nl.second[k]]) != 0;
     };
     const std::vector<std::uint32_t> hits = parallel_filter(nl.size(), touches_parent);
     // elastic energy that leaves with the parents' contacts: worked out on all threads, booked

@@ -52,10 +52,7 @@ void StressingEvents::clear(ParticleStore& p, std::size_t s) const {
 void StressingEvents::gather_loads(const Simulation& sim) {
   const auto& p = sim.particles;
   const std::size_t n = p.size();
-  // cleared on all threads (an assign() would be a serial fill of 32 B per slot in every step)
-  contact_load_.resize(n);
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
-  for (std::size_t i = 0; i < n; ++i) contact_load_[i] = ContactLoad{};
+  contact_load_.resize(n);  // cleared by the scatter below (fresh), on the first thread
   const auto& nl = sim.pairs();
   const ContactStateStore& pairs = sim.pair_state();
   const LoadingRecord& loading = *sim.contacts().loading();
@@ -87,7 +84,7 @@ void StressingEvents::gather_loads(const Simulation& sim) {
         return ContactLoad{x.work + y.work, x.force + y.force, std::max(x.largest, y.largest),
                            x.approach + y.approach};
       },
-      &load_copies_);
+      &load_copies_, true);
   // a ghost's contacts load its owner (periodic boundaries)
   for (std::size_t s = p.owned(); s < n; ++s) {
     ContactLoad& o = contact_load_[p.owner_of(s)];

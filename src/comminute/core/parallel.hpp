@@ -4,6 +4,7 @@
 // bit-for-bit reproducible (needed for checkpoint/restart).
 #include <omp.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <exception>
 #include <vector>
@@ -37,13 +38,16 @@ inline void flush_denormals_to_zero() {
 // first touch of its pages) is not a serial pass of the calling thread.
 // Thread t of nt takes [n t / nt, n (t + 1) / nt); nt = 1 below kScatterMin iterations. A caller
 // that scatters every step passes `kept`, where the copies stay between calls (no fresh pages to
-// fault in each step).
+// fault in each step). With `fresh`, `out` is first filled with `identity` (by the first thread,
+// while the others fill their copies).
 inline constexpr std::size_t kScatterMin = 8192;
 template <class T, class Body, class Combine>
 void parallel_scatter(std::size_t n, std::vector<T>& out, const T& identity, Body&& body,
-                      Combine&& combine, std::vector<std::vector<T>>* kept = nullptr) {
+                      Combine&& combine, std::vector<std::vector<T>>* kept = nullptr,
+                      bool fresh = false) {
   const int nt = n >= kScatterMin ? max_threads() : 1;
   if (nt == 1) {
+    if (fresh) std::fill(out.begin(), out.end(), identity);
     for (std::size_t k = 0; k < n; ++k) body(k, out);
     return;
   }
@@ -54,6 +58,7 @@ void parallel_scatter(std::size_t n, std::vector<T>& out, const T& identity, Bod
   {
     const int t = thread_id();
     if (t > 0) copies[static_cast<std::size_t>(t - 1)].assign(out.size(), identity);
+    if (t == 0 && fresh) std::fill(out.begin(), out.end(), identity);
     std::vector<T>& acc = t == 0 ? out : copies[static_cast<std::size_t>(t - 1)];
     const std::size_t k1 = n * static_cast<std::size_t>(t + 1) / static_cast<std::size_t>(nt);
     for (std::size_t k = n * static_cast<std::size_t>(t) / static_cast<std::size_t>(nt); k < k1;

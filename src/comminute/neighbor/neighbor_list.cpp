@@ -14,9 +14,24 @@ constexpr std::size_t kThreadedLoop = 16384;
 }  // namespace
 
 void NeighborList::make_rows(std::size_t n) {
-  row_.assign(n + 1, 0);
-  for (auto f : first) ++row_[f + 1];
-  for (std::size_t i = 0; i < n; ++i) row_[i + 1] += row_[i];
+  // `first` ascends (rows by owner slot): row_[i] is the first pair whose owner is >= i. Each
+  // thread finds where its range of slots starts by bisection, then walks the list from there.
+  row_.resize(n + 1);
+  const std::size_t m = first.size();
+  const int nt = n >= kThreadedLoop ? max_threads() : 1;
+#pragma omp parallel num_threads(nt)
+  {
+    const auto t = static_cast<std::size_t>(thread_id());
+    const std::size_t i0 = n * t / static_cast<std::size_t>(nt),
+                      i1 = n * (t + 1) / static_cast<std::size_t>(nt);
+    auto k =
+        static_cast<std::size_t>(std::lower_bound(first.begin(), first.end(), i0) - first.begin());
+    for (std::size_t i = i0; i < i1; ++i) {
+      while (k < m && first[k] < i) ++k;
+      row_[i] = static_cast<std::uint32_t>(k);
+    }
+  }
+  row_[n] = static_cast<std::uint32_t>(m);
 }
 
 void NeighborList::build(const ParticleStore& p, double skin, const std::vector<std::uint8_t>& keep,

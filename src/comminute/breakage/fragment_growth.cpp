@@ -39,7 +39,6 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
   for (std::size_t i = 0; i < n; ++i) {
     const bool g = (p.flags[i] & pflag::growing) != 0;
     state[i] = g ? was_growing : 0;
-    limit[i] = g ? target[i] : 0.0;
     r_before[i] = p.radius[i];
   }
   const auto& nl = sim.pairs();
@@ -49,6 +48,8 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
   parallel_select(
       nl.size(), [&](std::size_t k) { return (state[nl.first[k]] | state[nl.second[k]]) != 0; },
       hits, select_parts_);
+  // the largest radius (m) the neighbours allow each growing particle, +inf where none bounds it
+  // (the growth below is capped at the final radius as well); filled by the scatter (fresh)
   parallel_scatter(
       hits.size(), limit, std::numeric_limits<double>::infinity(),
       [&](std::size_t m, std::vector<double>& lim) {
@@ -71,7 +72,7 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
           lim[j] = std::min(lim[j], radius_allowed(p.x[j], target[j], {p.x[i], p.radius[i]}, eps));
         }
       },
-      [](double a, double b) { return std::min(a, b); }, &limit_copies_);
+      [](double a, double b) { return std::min(a, b); }, &limit_copies_, true);
   // a ghost's neighbours bound its owner's growth (periodic boundaries)
   for (std::size_t s = p.owned(); s < n; ++s)
     limit[p.owner_of(s)] = std::min(limit[p.owner_of(s)], limit[s]);

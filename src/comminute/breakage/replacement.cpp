@@ -57,9 +57,13 @@ void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
     const auto& nl = sim.pairs();
     // 1 for a parent's slot of the list; a slot of the list may be a periodic ghost (no longer in
     // the store): its owner stands in. The scan of the list then reads one byte per slot.
-    std::vector<std::uint8_t> parent_slot(p.owned() + sim.ghost_count(), 0);
-    for (std::size_t s = 0; s < parent_slot.size(); ++s)
-      parent_slot[s] = batch[s < p.owned() ? s : sim.slot_owner(s)] != 0 ? 1 : 0;
+    std::vector<std::uint8_t> parent_slot(p.owned() + sim.ghost_count());
+    const auto n_slots = static_cast<std::ptrdiff_t>(parent_slot.size());
+#pragma omp parallel for schedule(static) if (n_slots >= 16384)
+    for (std::ptrdiff_t s = 0; s < n_slots; ++s) {
+      const auto u = static_cast<std::size_t>(s);
+      parent_slot[u] = batch[u < p.owned() ? u : sim.slot_owner(u)] != 0 ? 1 : 0;
+    }
     const auto touches_parent = [&](std::size_t k) {
       return (parent_slot[nl.first[k]] | parent_slot[nl.second[k]]) != 0;
     };

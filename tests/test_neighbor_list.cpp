@@ -47,6 +47,19 @@ std::set<std::pair<std::uint64_t, std::uint64_t>> listed(const NeighborList& nl,
   return out;
 }
 
+// rows() must be the CSR offsets of `first`: row i holds exactly the pairs owned by slot i (the
+// pair force loop splits its threads' work by these offsets).
+void expect_rows_match(const NeighborList& nl, std::size_t n) {
+  const auto& rows = nl.rows();
+  ASSERT_EQ(rows.size(), n + 1);
+  EXPECT_EQ(rows[0], 0u);
+  EXPECT_EQ(rows[n], nl.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    ASSERT_LE(rows[i], rows[i + 1]) << "slot " << i;
+    for (std::uint32_t k = rows[i]; k < rows[i + 1]; ++k) ASSERT_EQ(nl.first[k], i) << "pair " << k;
+  }
+}
+
 }  // namespace
 
 TEST(NeighborList, MonodisperseMatchesBruteForce) {
@@ -79,6 +92,31 @@ TEST(NeighborList, CellOrderIsAPermutation) {
 // first, with the appended spheres of the first in the index's overflow cells). With the build
 // positions unchanged, the updated list must equal a fresh build exactly, with no pair twice;
 // rebuild_index() (checkpoints) must give the same list.
+// Rows after a build and after an in-place update, on a store large enough for the threaded
+// search of the row starts (16384 slots and more), with empty rows among them.
+TEST(NeighborList, RowsAreTheOffsetsOfEachOwnersPairs) {
+  const double skin = 0.0001;
+  ParticleStore p = random_bed(20000, 0.0005, 0.002, 0.02, 0.03, 8);
+  NeighborList nl;
+  nl.build(p, skin);
+  ASSERT_GT(nl.size(), p.size() / 2);  // the bed is dense enough that rows have content
+  expect_rows_match(nl, p.size());
+  for (std::size_t i = 0; i < p.size(); i += 7) p.flags[i] |= pflag::remove;
+  p.compact();
+  const std::vector<std::uint32_t> to_new = nl.slots_after_removal(p);
+  ASSERT_FALSE(to_new.empty());
+  Rng rng(9);
+  for (int k = 0; k < 500; ++k) {
+    ParticleInit init;
+    init.radius = 0.0005;
+    init.x = {rng.uniform(0, 0.03), rng.uniform(0, 0.03), rng.uniform(0, 0.03)};
+    init.density = 1000;
+    p.add(init);
+  }
+  nl.update_in_place(p, to_new, p.x, p.radius);
+  expect_rows_match(nl, p.size());
+}
+
 TEST(NeighborList, InPlaceUpdateEqualsAFreshBuild) {
   const double skin = 0.0001;
   ParticleStore p = random_bed(3000, 0.0005, 0.005, 0.03, 0.05, 4);

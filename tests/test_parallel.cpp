@@ -118,6 +118,37 @@ TEST(Parallel, ScatterMatchesTheSerialLoop) {
   for (std::size_t i = 0; i < slots; ++i) EXPECT_NEAR(s1[i], s2[i], 1e-12);
 }
 
+// parallel_scatter with the copies kept between calls and `fresh`: `out` (left with other values)
+// and the kept copies (left from a call with other data) are refilled with the identity, so a
+// repeated call gives exactly what a call on a cleared `out` gives. Sums in the same order: equal
+// bit for bit.
+TEST(Parallel, ScatterWithKeptCopiesAndFreshOutRepeatsExactly) {
+  const std::size_t pairs = 100000, slots = 3000;
+  Rng rng(4);
+  std::vector<std::uint32_t> a(pairs);
+  std::vector<double> w(pairs);
+  for (std::size_t k = 0; k < pairs; ++k) {
+    a[k] = static_cast<std::uint32_t>(rng.below(slots));
+    w[k] = rng.uniform(-1, 1);
+  }
+  const auto body = [&](std::size_t k, std::vector<double>& s) { s[a[k]] += w[k]; };
+  const auto plus = [](double x, double y) { return x + y; };
+  const int saved = omp_get_max_threads();
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    std::vector<double> cleared(slots, 0.0);
+    parallel_scatter(pairs, cleared, 0.0, body, plus);
+    std::vector<std::vector<double>> kept;
+    std::vector<double> reused(slots, 7.0);  // stale values: fresh must drop them
+    parallel_scatter(pairs, reused, 0.0, body, plus, &kept, true);
+    EXPECT_EQ(reused, cleared) << threads << " threads";
+    parallel_scatter(pairs, reused, 0.0, body, plus, &kept, true);  // copies hold the last sums
+    EXPECT_EQ(reused, cleared) << threads << " threads, second call";
+    EXPECT_EQ(kept.size(), static_cast<std::size_t>(threads - 1));
+  }
+  omp_set_num_threads(saved);
+}
+
 // Breakage on two threads: a pre-stressed lattice of 9261 weak particles squeezed by a platen
 // (the benchmark's bed, small), so that the module's threaded loops (contact loads, growth) and
 // in-place fragment insertion all run; the same thread count must repeat bit for bit. Also run

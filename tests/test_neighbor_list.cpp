@@ -47,6 +47,15 @@ std::set<std::pair<std::uint64_t, std::uint64_t>> listed(const NeighborList& nl,
   return out;
 }
 
+// Appends a sphere of radius r at a random place in the cube [0, box]^3.
+void add_sphere(ParticleStore& p, double r, double box, Rng& rng) {
+  ParticleInit init;
+  init.radius = r;
+  init.x = {rng.uniform(0, box), rng.uniform(0, box), rng.uniform(0, box)};
+  init.density = 1000;
+  p.add(init);
+}
+
 // rows() must be the CSR offsets of `first`: row i holds exactly the pairs owned by slot i (the
 // pair force loop splits its threads' work by these offsets).
 void expect_rows_match(const NeighborList& nl, std::size_t n) {
@@ -106,13 +115,7 @@ TEST(NeighborList, RowsAreTheOffsetsOfEachOwnersPairs) {
   const std::vector<std::uint32_t> to_new = nl.slots_after_removal(p);
   ASSERT_FALSE(to_new.empty());
   Rng rng(9);
-  for (int k = 0; k < 500; ++k) {
-    ParticleInit init;
-    init.radius = 0.0005;
-    init.x = {rng.uniform(0, 0.03), rng.uniform(0, 0.03), rng.uniform(0, 0.03)};
-    init.density = 1000;
-    p.add(init);
-  }
+  for (int k = 0; k < 500; ++k) add_sphere(p, 0.0005, 0.03, rng);
   nl.update_in_place(p, to_new, p.x, p.radius);
   expect_rows_match(nl, p.size());
 }
@@ -129,13 +132,8 @@ TEST(NeighborList, InPlaceUpdateEqualsAFreshBuild) {
     p.compact();
     const std::vector<std::uint32_t> to_new = nl.slots_after_removal(p);
     ASSERT_FALSE(to_new.empty());
-    for (int k = 0; k < 300; ++k) {
-      ParticleInit init;
-      init.radius = k % 50 == 0 ? 0.007 : 0.0005 * rng.uniform(0.3, 1.0);
-      init.x = {rng.uniform(0, 0.05), rng.uniform(0, 0.05), rng.uniform(0, 0.05)};
-      init.density = 1000;
-      p.add(init);
-    }
+    for (int k = 0; k < 300; ++k)
+      add_sphere(p, k % 50 == 0 ? 0.007 : 0.0005 * rng.uniform(0.3, 1.0), 0.05, rng);
     nl.update_in_place(p, to_new, p.x, p.radius);
     EXPECT_EQ(listed(nl, p), brute_force(p, skin)) << "round " << round;
   }
@@ -145,13 +143,7 @@ TEST(NeighborList, InPlaceUpdateEqualsAFreshBuild) {
   for (std::size_t i = 0; i < p.size(); i += 3) p.flags[i] |= pflag::remove;
   p.compact();
   const auto to_new = nl.slots_after_removal(p);
-  for (int k = 0; k < 100; ++k) {
-    ParticleInit init;
-    init.radius = 0.0004;
-    init.x = {rng.uniform(0, 0.05), rng.uniform(0, 0.05), rng.uniform(0, 0.05)};
-    init.density = 1000;
-    p.add(init);
-  }
+  for (int k = 0; k < 100; ++k) add_sphere(p, 0.0004, 0.05, rng);
   nl.update_in_place(p, to_new, p.x, p.radius);
   restored.update_in_place(p, restored.slots_after_removal(p), p.x, p.radius);
   EXPECT_EQ(nl.first, restored.first);

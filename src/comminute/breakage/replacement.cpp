@@ -59,7 +59,8 @@ void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
     // the store): its owner stands in. The scan of the list then reads one byte per slot.
     std::vector<std::uint8_t> parent_slot(p.owned() + sim.ghost_count());
     const auto n_slots = static_cast<std::ptrdiff_t>(parent_slot.size());
-#pragma omp parallel for schedule(static) if (n_slots >= 16384)
+    const bool threaded = parent_slot.size() >= kParallelMin;
+#pragma omp parallel for schedule(static) if (threaded)
     for (std::ptrdiff_t s = 0; s < n_slots; ++s) {
       const auto u = static_cast<std::size_t>(s);
       parent_slot[u] = batch[u < p.owned() ? u : sim.slot_owner(u)] != 0 ? 1 : 0;

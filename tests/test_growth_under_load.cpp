@@ -144,3 +144,42 @@ TEST(GrowthUnderLoad, PushingGrowthEnergyLedgerCloses) {
   EXPECT_LE(std::abs(fine.drift), 0.5 * std::abs(coarse.drift));
   EXPECT_LE(std::abs(fine.drift), 1e-3 * fine.work);
 }
+
+// Capped growth against another sphere: a growing sphere (3 mm, final 5 mm, 25 µm per step) and a
+// 6 mm sphere 10.51 mm away, both held fixed. Growth stops where the overlap reaches 0.001 of the
+// smaller radius, r + R - d = 0.001 r, to round-off. The last step before the stall starts 10 µm
+// from touching, closer than one step's growth: a pair passed over because it is not touching yet
+// (growth's shortcut for pairs too far apart to matter) would let the sphere grow 10 µm into the
+// other instead of 4.5 µm.
+TEST(GrowthUnderLoad, CappedGrowthStopsAtANeighbourWithinOneStep) {
+  DemSetup s;
+  s.youngs = kYoungs;
+  s.poisson = kPoisson;
+  s.density = kDensity;
+  auto sim = make_simulation(s);
+  std::vector<std::optional<breakage::MaterialBreakage>> mats(1);  // no breakage: growth only
+  auto mod =
+      std::make_unique<breakage::BreakageModule>(std::move(mats), breakage::BreakageOptions{});
+  mod->register_fields(sim->particles);
+  constexpr double kOther = 6e-3, kDistance = 10.51e-3;  // m
+  ParticleInit grower;
+  grower.radius = kStart;
+  grower.density = kDensity;
+  grower.flags = pflag::growing | pflag::fixed;
+  sim->particles.add_with_mass(grower,
+                               kDensity * 4.0 / 3.0 * std::numbers::pi * std::pow(kFinal, 3));
+  ParticleInit other;
+  other.x = {kDistance, 0, 0};
+  other.radius = kOther;
+  other.density = kDensity;
+  other.flags = pflag::fixed;
+  sim->particles.add(other);
+  auto& p = sim->particles;
+  p.field(p.field_index("breakage.target_radius"))[0] = kFinal;
+  sim->modules.push_back(std::move(mod));
+  sim->dt = 1e-6;
+  sim->setup();
+  sim->run(200);  // 60 steps to reach the other sphere at 25 µm per step
+  EXPECT_TRUE(p.flags[0] & pflag::growing);
+  EXPECT_NEAR(p.radius[0], (kDistance - kOther) / (1 - 0.001), 1e-12);
+}

@@ -35,12 +35,18 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
   state.resize(n);
   r_before.resize(n);
   const auto& target = p.field(f_target);
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  double target_max = 0;  // m, the largest final radius of a growing particle
+#pragma omp parallel for schedule(static) reduction(max : target_max) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     const bool g = (p.flags[i] & pflag::growing) != 0;
     state[i] = g ? was_growing : 0;
     r_before[i] = p.radius[i];
+    target_max = std::max(target_max, g ? target[i] : 0.0);
   }
+  // No particle grows by more than this (m) in the step. A pair whose gap is at least twice it
+  // cannot bound either particle's growth: every rule below allows each of them at least half the
+  // gap (the margin, relative 1e-9, covers rounding), so it is passed over without a root.
+  const double growth_max = step_ * target_max;
   const auto& nl = sim.pairs();
   // The pairs with a growing particle, in list order (a third or more of them): only these bound
   // the growth and carry growth energy.
@@ -50,10 +56,15 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
       hits, select_parts_);
   // the largest radius (m) the neighbours allow each growing particle, +inf where none bounds it
   // (the growth below is capped at the final radius as well); filled by the scatter (fresh)
+  std::vector<std::uint8_t>& near = hit_near_;
+  near.resize(hits.size());
   parallel_scatter(
       hits.size(), limit, std::numeric_limits<double>::infinity(),
       [&](std::size_t m, std::vector<double>& lim) {
         const std::uint32_t i = nl.first[hits[m]], j = nl.second[hits[m]];
+        const double apart = p.radius[i] + p.radius[j] + 2 * growth_max;
+        near[m] = norm2(p.x[i] - p.x[j]) > apart * apart * (1 + 1e-9) ? 0 : 1;
+        if (near[m] == 0) return;
         const bool gi = state[i] != 0, gj = state[j] != 0;
         if (pushing) {  // the overlap may deepen by eps min(r_i, r_j), shared when both grow
           const double gap = norm(p.x[i] - p.x[j]) - p.radius[i] - p.radius[j];
@@ -150,6 +161,7 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
     double sum = 0;  // in pair order over thread t's range of the hits
     const std::size_t m1 = hits.size() * (t + 1) / static_cast<std::size_t>(nh);
     for (std::size_t m = hits.size() * t / static_cast<std::size_t>(nh); m < m1; ++m) {
+      if (near[m] == 0) continue;  // too far apart to touch after growth (see growth_max)
       const std::uint32_t k = hits[m];
       const std::uint32_t i = nl.first[k], j = nl.second[k];
       if (((state[i] | state[j]) & grew) == 0) continue;  // nothing grew

@@ -45,7 +45,8 @@ class FragmentGrowth {
   // fresh pages each step); filled on all threads
   std::vector<double> limit_, r_before_;
   std::vector<std::uint8_t> state_;
-  std::vector<std::uint32_t> hit_pairs_;   // pairs with a growing particle, in list order
+  std::vector<std::uint32_t> hit_pairs_;  // pairs with a growing particle, in list order
+  std::vector<std::uint8_t> hit_near_;    // per hit pair: 1 when close enough to touch after growth
   std::vector<std::uint32_t> free_slots_;  // growing particles with room to grow, ascending
   std::vector<std::vector<std::uint32_t>> select_parts_;  // per thread, for parallel_select
   std::vector<std::vector<double>> limit_copies_;         // other threads' copies of limit_

@@ -108,9 +108,11 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
       [&](std::size_t m, std::vector<GrowthTally>& acc) {
         const std::size_t i = free[m];
         thread_local std::vector<WallContact> found;
+        bool near_wall = false;  // some wall within the final radius (it grows no further)
         for (const auto& w : sim.walls) {
           found.clear();
           w->contacts(p.x[i], p.radius[i], target[i], found);
+          near_wall = near_wall || !found.empty();
           for (const auto& c : found)  // distance to the wall = r - overlap
             limit[i] = std::min(
                 limit[i], pushing_ ? p.radius[i] + std::max(0.0, -c.overlap) + eps * p.radius[i]
@@ -134,6 +136,7 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
         p.radius[i] = r_new;
         if (r_new == r_before[i]) return;
         state[i] |= grew;
+        if (!near_wall) return;  // no wall it could touch at its new radius
         for (const auto& w : sim.walls) {
           found.clear();
           w->contacts(p.x[i], r_new, 0.0, found);

@@ -118,20 +118,23 @@ void StressingEvents::assess(Simulation& sim, const BreakageMaterials& materials
   auto& p = sim.particles;
   const std::size_t n = p.owned();  // ghosts are assessed through their owners
   // Each particle's event reads and writes only that particle's fields (the criteria's included),
-  // so the particles are shared out in contiguous ranges; what reaches the log and the
-  // replacement queue is collected per range and handed on in range order, i.e. in slot order as
-  // a serial loop would: the result does not depend on the thread count.
+  // so the particles are shared out in blocks of slots; what reaches the log and the replacement
+  // queue is collected per block and handed on in block order, i.e. in slot order as a serial
+  // loop would: the result does not depend on the thread count. The blocks are handed out as the
+  // threads come free: the breakable particles (unbroken parents, at the low slots) cost far more
+  // than the fragments appended after them, so equal halves of the slots are not equal work.
+  constexpr std::size_t kBlock = 2048;
+  const std::size_t blocks = (n + kBlock - 1) / kBlock;
   const int nt = n >= kParallelMin ? max_threads() : 1;
   std::vector<AssessOutcome>& outcome = outcome_;
-  outcome.resize(static_cast<std::size_t>(nt));
-#pragma omp parallel num_threads(nt)
-  {
-    const auto t = static_cast<std::size_t>(thread_id());
-    AssessOutcome& o = outcome[t];
+  outcome.resize(blocks);
+  const auto nb = static_cast<std::ptrdiff_t>(blocks);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(nt)
+  for (std::ptrdiff_t b = 0; b < nb; ++b) {
+    const auto i0 = static_cast<std::size_t>(b) * kBlock;
+    AssessOutcome& o = outcome[static_cast<std::size_t>(b)];
     o.clear();
-    const std::size_t i0 = n * t / static_cast<std::size_t>(nt),
-                      i1 = n * (t + 1) / static_cast<std::size_t>(nt);
-    assess_range(sim, materials, f, i0, i1, o);
+    assess_range(sim, materials, f, i0, std::min(n, i0 + kBlock), o);
   }
   for (const AssessOutcome& o : outcome) {
     for (std::uint64_t e = 0; e < o.ended; ++e) log.count_event();

@@ -82,7 +82,7 @@ class StressingEvents {
       broken_records.clear();
     }
   };
-  std::vector<AssessOutcome> outcome_;  // per thread, scratch
+  std::vector<AssessOutcome> outcome_;  // per block of slots, scratch
   void assess_range(Simulation& sim, const BreakageMaterials& materials, const BreakageFields& f,
                     std::size_t i0, std::size_t i1, AssessOutcome& out) const;
 };

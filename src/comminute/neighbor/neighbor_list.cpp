@@ -14,24 +14,24 @@ constexpr std::size_t kThreadedLoop = 16384;
 }  // namespace
 
 void NeighborList::make_rows(std::size_t n) {
-  // `first` ascends (rows by owner slot): row_[i] is the first pair whose owner is >= i. Each
-  // thread finds where its range of slots starts by bisection, then walks the list from there.
+  // `first` ascends (rows by owner slot): row_[i] is the first pair whose owner is >= i. Pair k
+  // sets the rows of the owners after the previous pair's owner up to its own, so the threads
+  // share the pairs, not the slots (the low slots own most pairs: a pair is found from the lower
+  // of its two slots at a build).
   row_.resize(n + 1);
   const std::size_t m = first.size();
-  const int nt = n >= kThreadedLoop ? max_threads() : 1;
+  const std::size_t tail = m == 0 ? 0 : std::size_t{first[m - 1]} + 1;  // owners after the last
+  const int nt = m + n >= kThreadedLoop ? max_threads() : 1;
 #pragma omp parallel num_threads(nt)
   {
-    const auto t = static_cast<std::size_t>(thread_id());
-    const std::size_t i0 = n * t / static_cast<std::size_t>(nt),
-                      i1 = n * (t + 1) / static_cast<std::size_t>(nt);
-    auto k =
-        static_cast<std::size_t>(std::lower_bound(first.begin(), first.end(), i0) - first.begin());
-    for (std::size_t i = i0; i < i1; ++i) {
-      while (k < m && first[k] < i) ++k;
-      row_[i] = static_cast<std::uint32_t>(k);
-    }
+    const auto t = static_cast<std::size_t>(thread_id()), ut = static_cast<std::size_t>(nt);
+    for (std::size_t k = m * t / ut; k < m * (t + 1) / ut; ++k)
+      for (std::size_t i = k == 0 ? 0 : std::size_t{first[k - 1]} + 1; i <= first[k]; ++i)
+        row_[i] = static_cast<std::uint32_t>(k);
+    const std::size_t left = n + 1 - std::min(n + 1, tail);
+    for (std::size_t i = tail + left * t / ut; i < tail + left * (t + 1) / ut; ++i)
+      row_[i] = static_cast<std::uint32_t>(m);
   }
-  row_[n] = static_cast<std::uint32_t>(m);
 }
 
 void NeighborList::build(const ParticleStore& p, double skin, const std::vector<std::uint8_t>& keep,
@@ -370,7 +370,9 @@ void NeighborList::update_in_place(const ParticleStore& p, const std::vector<std
     if (to_new[static_cast<std::size_t>(old)] != none)
       large[to_new[static_cast<std::size_t>(old)]] = large_[static_cast<std::size_t>(old)];
   large_ = std::move(large);
-  ids_ = p.id;
+  ids_.resize(n);  // ids_ = p.id, on all threads
+#pragma omp parallel for schedule(static) if (n >= kThreadedLoop)
+  for (std::size_t s = 0; s < n; ++s) ids_[s] = p.id[s];
   make_rows(n);
 }
 

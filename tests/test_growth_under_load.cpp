@@ -149,8 +149,8 @@ TEST(GrowthUnderLoad, PushingGrowthEnergyLedgerCloses) {
 // 6 mm sphere 10.51 mm away, both held fixed. Growth stops where the overlap reaches 0.001 of the
 // smaller radius, r + R - d = 0.001 r, to round-off. The last step before the stall starts 10 µm
 // from touching, closer than one step's growth: a pair passed over because it is not touching yet
-// (growth's shortcut for pairs too far apart to matter) would let the sphere grow 10 µm into the
-// other instead of 4.5 µm.
+// (growth's shortcut for pairs too far apart to matter) would let the spheres overlap by 15 µm
+// instead of 4.5 µm.
 TEST(GrowthUnderLoad, CappedGrowthStopsAtANeighbourWithinOneStep) {
   DemSetup s;
   s.youngs = kYoungs;

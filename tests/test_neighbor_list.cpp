@@ -3,7 +3,10 @@
 // stays linear in size.
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "comminute/core/rng.hpp"
@@ -102,22 +105,35 @@ TEST(NeighborList, CellOrderIsAPermutation) {
 // positions unchanged, the updated list must equal a fresh build exactly, with no pair twice;
 // rebuild_index() (checkpoints) must give the same list.
 // Rows after a build and after an in-place update, on a store large enough for the threaded
-// search of the row starts (16384 slots and more), with empty rows among them.
+// search of the row starts (16384 slots and more), with empty rows among them, on 1, 2 and 3
+// threads. Slots 6000-13999 sit in a lattice apart from the bed (5 mm apart, more than
+// 2 r_max + skin): a long run of owners without pairs across the threads' shares of the slots,
+// whose rows must come from the first owner with pairs after the run.
 TEST(NeighborList, RowsAreTheOffsetsOfEachOwnersPairs) {
-  const double skin = 0.0001;
-  ParticleStore p = random_bed(20000, 0.0005, 0.002, 0.02, 0.03, 8);
-  NeighborList nl;
-  nl.build(p, skin);
-  ASSERT_GT(nl.size(), p.size() / 2);  // the bed is dense enough that rows have content
-  expect_rows_match(nl, p.size());
-  for (std::size_t i = 0; i < p.size(); i += 7) p.flags[i] |= pflag::remove;
-  p.compact();
-  const std::vector<std::uint32_t> to_new = nl.slots_after_removal(p);
-  ASSERT_FALSE(to_new.empty());
-  Rng rng(9);
-  for (int k = 0; k < 500; ++k) add_sphere(p, 0.0005, 0.03, rng);
-  nl.update_in_place(p, to_new, p.x, p.radius);
-  expect_rows_match(nl, p.size());
+  const int saved = omp_get_max_threads();
+  for (const int threads : {1, 2, 3}) {
+    omp_set_num_threads(threads);
+    const double skin = 0.0001;
+    ParticleStore p = random_bed(20000, 0.0005, 0.002, 0.02, 0.03, 8);
+    for (std::size_t s = 6000; s < 14000; ++s) {
+      const auto q = static_cast<double>(s - 6000);
+      p.x[s] = {0.05 + 0.005 * std::fmod(q, 20), 0.005 * std::fmod(std::floor(q / 20), 20),
+                0.005 * std::floor(q / 400)};
+    }
+    NeighborList nl;
+    nl.build(p, skin);
+    ASSERT_GT(nl.size(), p.size() / 4);  // the bed is dense enough that rows have content
+    expect_rows_match(nl, p.size());
+    for (std::size_t i = 0; i < p.size(); i += 7) p.flags[i] |= pflag::remove;
+    p.compact();
+    const std::vector<std::uint32_t> to_new = nl.slots_after_removal(p);
+    ASSERT_FALSE(to_new.empty());
+    Rng rng(9);
+    for (int k = 0; k < 500; ++k) add_sphere(p, 0.0005, 0.03, rng);
+    nl.update_in_place(p, to_new, p.x, p.radius);
+    expect_rows_match(nl, p.size());
+  }
+  omp_set_num_threads(saved);
 }
 
 TEST(NeighborList, InPlaceUpdateEqualsAFreshBuild) {

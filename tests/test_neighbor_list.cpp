@@ -104,8 +104,8 @@ TEST(NeighborList, CellOrderIsAPermutation) {
 // first, with the appended spheres of the first in the index's overflow cells). With the build
 // positions unchanged, the updated list must equal a fresh build exactly, with no pair twice;
 // rebuild_index() (checkpoints) must give the same list.
-// Rows after a build and after an in-place update, on a store large enough for the threaded
-// search of the row starts (16384 slots and more), with empty rows among them, on 1, 2 and 3
+// Rows after a build and after an in-place update, on a store large enough for the rows to be
+// made on all threads (16384 slots and more), with empty rows among them, on 1, 2 and 3
 // threads. Slots 6000-13999 sit in a lattice apart from the bed (5 mm apart, more than
 // 2 r_max + skin): a long run of owners without pairs across the threads' shares of the slots,
 // whose rows must come from the first owner with pairs after the run.
@@ -122,12 +122,13 @@ TEST(NeighborList, RowsAreTheOffsetsOfEachOwnersPairs) {
     }
     NeighborList nl;
     nl.build(p, skin);
-    ASSERT_GT(nl.size(), p.size() / 4);  // the bed is dense enough that rows have content
+    EXPECT_GT(nl.size(), p.size() / 4);  // the bed (12000 spheres) is dense enough for content
     expect_rows_match(nl, p.size());
     for (std::size_t i = 0; i < p.size(); i += 7) p.flags[i] |= pflag::remove;
     p.compact();
     const std::vector<std::uint32_t> to_new = nl.slots_after_removal(p);
-    ASSERT_FALSE(to_new.empty());
+    EXPECT_FALSE(to_new.empty());
+    if (to_new.empty()) break;  // (the thread count is restored below)
     Rng rng(9);
     for (int k = 0; k < 500; ++k) add_sphere(p, 0.0005, 0.03, rng);
     nl.update_in_place(p, to_new, p.x, p.radius);

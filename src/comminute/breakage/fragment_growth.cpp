@@ -63,18 +63,19 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
       [&](std::size_t m, std::vector<double>& lim) {
         const std::uint32_t i = nl.first[hits[m]], j = nl.second[hits[m]];
         const double apart = p.radius[i] + p.radius[j] + 2 * growth_max;
-        near[m] = norm2(p.x[i] - p.x[j]) > apart * apart * (1 + 1e-9) ? 0 : 1;
+        const double d2 = norm2(p.x[i] - p.x[j]);
+        near[m] = d2 > apart * apart * (1 + 1e-9) ? 0 : 1;
         if (near[m] == 0) return;
         const bool gi = state[i] != 0, gj = state[j] != 0;
         if (pushing) {  // the overlap may deepen by eps min(r_i, r_j), shared when both grow
-          const double gap = norm(p.x[i] - p.x[j]) - p.radius[i] - p.radius[j];
+          const double gap = std::sqrt(d2) - p.radius[i] - p.radius[j];
           const double room = std::max(0.0, gap) + eps * std::min(p.radius[i], p.radius[j]);
           const double share = gi && gj ? 0.5 * room : room;
           if (gi) lim[i] = std::min(lim[i], p.radius[i] + share);
           if (gj) lim[j] = std::min(lim[j], p.radius[j] + share);
         } else if (gi && gj) {  // two growing spheres share the room up to the allowed overlap
-          const double room = norm(p.x[i] - p.x[j]) - p.radius[i] - p.radius[j] +
-                              eps * std::min(p.radius[i], p.radius[j]);
+          const double room =
+              std::sqrt(d2) - p.radius[i] - p.radius[j] + eps * std::min(p.radius[i], p.radius[j]);
           lim[i] = std::min(lim[i], p.radius[i] + 0.5 * room);
           lim[j] = std::min(lim[j], p.radius[j] + 0.5 * room);
         } else if (gi) {

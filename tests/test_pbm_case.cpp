@@ -26,7 +26,11 @@ nu = 2.0
 )";
 
 pbm::Problem problem(const std::string& text, const std::string& name = "case.toml") {
-  const auto dir = std::filesystem::temp_directory_path() / "comminute_pbm_case";
+  // one folder per test: ctest runs the tests of this file as parallel processes, which must not
+  // rewrite each other's feed table while it is read
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("comminute_pbm_case_" +
+                    std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "feed.csv") << "size_m,cumulative_passing\n1e-4,0.1\n2e-4,0.3\n4e-4,1.0\n";
   std::ofstream(dir / name) << text << rest;

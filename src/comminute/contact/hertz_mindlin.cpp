@@ -44,22 +44,28 @@ class HertzMindlin final : public ContactLaw {
 
  private:
   // The contacts of a batch in stages, each a loop over up to kStage contacts: the square roots of
-  // the contact radius, of the dashpot and of the spring's rotation each in a loop of their own
-  // (independent, so they overlap and vectorise instead of each contact waiting on its own chain
-  // of division and roots), and the arithmetic of the friction in structure-of-arrays loops: every
-  // contact's sticking, capped and sliding values, of which it keeps its own (no branch on whether
-  // it slides, which in a flowing bed is unpredictable: 40 % of the contacts of the drum bench).
-  // Every contact goes through the same operations as compute(), coulomb_rotated() included.
+  // the contact radius and of the dashpot each in a loop of their own (independent, so they overlap
+  // and vectorise instead of each contact waiting on its own chain of division and roots); the
+  // contacts' inputs gathered into columns, and all the arithmetic in structure-of-arrays loops
+  // that vectorise: a branch of the law (the spring projected or not, sticking, capped or sliding)
+  // is computed for every contact and each keeps its own (whether a contact slides is
+  // unpredictable in a flowing bed: 40 % of the contacts of the drum bench). Every contact goes
+  // through the same operations as compute(), coulomb_rotated() included.
   COMMINUTE_VECTOR_CLONES void batch(const ContactBatch& b) const {
     constexpr std::size_t kStage = 64;
-    std::array<double, kStage> arg, a, root, before, after, factor;
-    std::array<Vec3, kStage> xi;
-    std::array<double, kStage> stick, slide;  // the Coulomb limits (not zeroed at each call)
-    std::array<double, kStage> was, now;      // the sliding flag before and after (0 or 1)
-    // the friction law in structure of arrays: the rotated spring, v_t, dt, k_t, c_t in; the
-    // stored spring, the force, the dashpot's and the slip's work and the spring's energy out
-    std::array<double, kStage> sx, sy, sz, vx, vy, vz, dt, kt, ct;
-    std::array<double, kStage> tx, ty, tz, fx, fy, fz, damping, friction, energy;
+    using Column = std::array<double, kStage>;
+    Column arg, a, root;
+    // a contact's inputs: the normal (nx, ny, nz), overlap, its rate, v_t, dt, the stored spring
+    // (after follow_stiffness()), the pair's E*, beta, G*, sqrt(4 G*/E*), mu_s, mu_d, the sliding
+    // flag (0 or 1)
+    Column nx, ny, nz, delta, rate, vx, vy, vz, dt, sx, sy, sz;
+    Column modulus, beta, shear, shear_root, mu, mu_dynamic, was;
+    // the normal force (elastic, total), its energy, its dashpot's work; the rotated spring, k_t,
+    // c_t, the Coulomb limits
+    Column elastic, normal, normal_energy, normal_damping, rx, ry, rz, kt, ct, stick, slide;
+    // the friction law's results: the stored spring, the force, the dashpot's and the slip's work,
+    // the spring's energy, the sliding flag (0 or 1)
+    Column tx, ty, tz, fx, fy, fz, damping, friction, energy, now;
     for (std::size_t c0 = 0; c0 < b.size; c0 += kStage) {
       const std::size_t n = std::min(kStage, b.size - c0);
       const ContactKinematics* K = b.kinematics + c0;
@@ -69,39 +75,73 @@ class HertzMindlin final : public ContactLaw {
       for (std::size_t c = 0; c < n; ++c) a[c] = std::sqrt(arg[c]);
       for (std::size_t c = 0; c < n; ++c) arg[c] = stiffness_mass(K[c], *P[c], a[c]);
       for (std::size_t c = 0; c < n; ++c) root[c] = std::sqrt(arg[c]);
+      // the inputs in columns; the spring first carried to this step's stiffness (rescale)
       for (std::size_t c = 0; c < n; ++c) {
-        const ProjectedSpring ps = normal_and_spring(
-            K[c], *P[c], StateRef{b.slots, b.index[c0 + c]}, a[c], root[c], out[c]);
-        xi[c] = ps.xi;
-        before[c] = ps.before;
-        after[c] = ps.after;
-        const Tangential co = tangential(*P[c], a[c], root[c], out[c]);
-        const Vec3& v = K[c].tangential_velocity;
-        vx[c] = v.x;
-        vy[c] = v.y;
-        vz[c] = v.z;
-        dt[c] = K[c].dt;
-        kt[c] = co.kt;
-        ct[c] = co.ct;
-        stick[c] = co.lim.stick;
-        slide[c] = co.lim.slide;
-        const float* flag = slots_.flag(StateRef{b.slots, b.index[c0 + c]});
+        const ContactKinematics& k = K[c];
+        const PairParameters& p = *P[c];
+        const StateRef s{b.slots, b.index[c0 + c]};
+        Vec3& spring = s.vec3(slots_.spring);
+        if (rescale_)
+          out[c].friction_dissipation +=
+              follow_stiffness(spring, s.f64(slots_.stiffness), mindlin(p, a[c]));
+        nx[c] = k.normal.x;
+        ny[c] = k.normal.y;
+        nz[c] = k.normal.z;
+        delta[c] = k.overlap;
+        rate[c] = k.overlap_rate;
+        vx[c] = k.tangential_velocity.x;
+        vy[c] = k.tangential_velocity.y;
+        vz[c] = k.tangential_velocity.z;
+        dt[c] = k.dt;
+        sx[c] = spring.x;
+        sy[c] = spring.y;
+        sz[c] = spring.z;
+        modulus[c] = p.effective_modulus;
+        beta[c] = p.damping_beta;
+        shear[c] = p.effective_shear_modulus;
+        shear_root[c] = p.shear_normal_root;
+        mu[c] = p.friction;
+        mu_dynamic[c] = p.dynamic_friction;
+        const float* flag = slots_.flag(s);
         was[c] = flag != nullptr ? *flag : 0.0;
       }
-      for (std::size_t c = 0; c < n; ++c) factor[c] = restore_length(before[c], after[c]);
+      // normal_and_spring() and tangential(), operation for operation; project_spring()'s two
+      // cases chosen per contact, restore_length() applied
       for (std::size_t c = 0; c < n; ++c) {
-        xi[c] *= factor[c];  // rotated: the length restored
-        sx[c] = xi[c].x;
-        sy[c] = xi[c].y;
-        sz[c] = xi[c].z;
+        const double sn = 2.0 * modulus[c] * a[c];  // S_n = 2 E* a
+        const double kn = 2.0 / 3.0 * sn;
+        const double gn = -2.0 * std::sqrt(5.0 / 6.0) * beta[c] * root[c];  // normal_damping()
+        const double fel = kn * delta[c];
+        const double fd = gn * rate[c];
+        const double fn = fel + fd;
+        elastic[c] = fel;
+        normal[c] = fn;
+        normal_energy[c] = 0.4 * fel * delta[c];
+        normal_damping[c] = fd * rate[c] * dt[c];
+        const double len2 = sx[c] * sx[c] + sy[c] * sy[c] + sz[c] * sz[c];
+        const double along = sx[c] * nx[c] + sy[c] * ny[c] + sz[c] * nz[c];
+        const double px = sx[c] - nx[c] * along, py = sy[c] - ny[c] * along,
+                     pz = sz[c] - nz[c] * along;
+        const double l2 = px * px + py * py + pz * pz;
+        const bool loaded = len2 > 0.0;
+        const bool turned = loaded & (l2 > 0.0);
+        const double restore = std::sqrt((turned ? len2 : 1.0) / (turned ? l2 : 1.0));
+        rx[c] = (loaded ? px : sx[c]) * restore;
+        ry[c] = (loaded ? py : sy[c]) * restore;
+        rz[c] = (loaded ? pz : sz[c]) * restore;
+        kt[c] = 8.0 * shear[c] * a[c];  // mindlin()
+        ct[c] = gn * shear_root[c];
+        stick[c] = mu[c] * std::abs(fn);  // friction_limit()
+        slide[c] = mu_dynamic[c] * std::abs(fn);
       }
+      if (!tangential_damping_) std::fill_n(ct.begin(), n, 0.0);  // (a loop of its own: vectorises)
       // coulomb_rotated(), operation for operation: both branches, and the cap of the sticking one,
       // for every contact (the roots and divisions of the branch not taken are thrown away, even
       // where they are not finite); a dissipation a contact's branch does not add is -0, which
       // leaves any sum as it is
       for (std::size_t c = 0; c < n; ++c) {
-        const double x = sx[c] + vx[c] * dt[c], y = sy[c] + vy[c] * dt[c],
-                     z = sz[c] + vz[c] * dt[c];  // trial = xi + v_t dt
+        const double x = rx[c] + vx[c] * dt[c], y = ry[c] + vy[c] * dt[c],
+                     z = rz[c] + vz[c] * dt[c];  // trial = xi + v_t dt
         const double xi2 = x * x + y * y + z * z;
         const double k = kt[c];
         const double spring2 = k * k * xi2;
@@ -137,11 +177,15 @@ class HertzMindlin final : public ContactLaw {
       for (std::size_t c = 0; c < n; ++c) {
         const StateRef s{b.slots, b.index[c0 + c]};
         if (float* flag = slots_.flag(s)) *flag = static_cast<float>(now[c]);
-        out[c].damping_dissipation += damping[c];
-        out[c].friction_dissipation += friction[c];
         s.vec3(slots_.spring) = {tx[c], ty[c], tz[c]};
-        out[c].tangential_force = {fx[c], fy[c], fz[c]};
-        out[c].stored_energy += energy[c];
+        ContactForces& o = out[c];
+        o.elastic_normal_force = elastic[c];
+        o.normal_force = normal[c];
+        o.normal_elastic_energy = normal_energy[c];
+        o.stored_energy = normal_energy[c] + energy[c];
+        o.damping_dissipation = normal_damping[c] + damping[c];
+        o.friction_dissipation += friction[c];
+        o.tangential_force = {fx[c], fy[c], fz[c]};
       }
     }
   }

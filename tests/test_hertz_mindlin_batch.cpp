@@ -114,6 +114,10 @@ TEST(HertzMindlinBatch, StagedBatchEqualsContactByContact) {
         EXPECT_EQ(fb[c].tangential_force, fs[c].tangential_force) << where;
         EXPECT_EQ(fb[c].stored_energy, fs[c].stored_energy) << where;
         EXPECT_EQ(fb[c].normal_elastic_energy, fs[c].normal_elastic_energy) << where;
+        // the law's energy alone (breakage's bookkeeping) gives compute()'s bits
+        EXPECT_EQ(t.law->normal_elastic_energy(*params[c], k[c].effective_radius, k[c].overlap),
+                  fs[c].normal_elastic_energy)
+            << where;
         EXPECT_EQ(fb[c].damping_dissipation, fs[c].damping_dissipation) << where;
         EXPECT_EQ(fb[c].friction_dissipation, fs[c].friction_dissipation) << where;
         const double mu_d = params[c]->dynamic_friction;

@@ -18,15 +18,11 @@ ContactForces contact_at_rest(const Simulation& sim, double overlap, double r_i,
   return out;
 }
 
-double overlap_energy(const Simulation& sim, double overlap, double r_i, double m_i,
-                      std::uint16_t a, double r_j, double m_j, std::uint16_t b) {
+double overlap_energy(const Simulation& sim, double overlap, double r_i, std::uint16_t a,
+                      double r_j, std::uint16_t b) {
   if (overlap <= 0) return 0.0;
-  // a fresh state: one scratch per thread, cleared in the slots of the contact's store (fragment
-  // growth asks this for each of its contacts in every step; a new scratch costs more)
-  thread_local ContactScratch fresh;
-  fresh.clear(r_j > 0 ? sim.pair_state() : sim.wall_state());
-  return contact_at_rest(sim, overlap, r_i, m_i, a, r_j, m_j, b, {0, 0, 1}, fresh)
-      .normal_elastic_energy;
+  const double effective_radius = r_j > 0 ? r_i * r_j / (r_i + r_j) : r_i;  // contact_at_rest()'s
+  return sim.contacts().normal_elastic_energy(sim.materials.pair(a, b), effective_radius, overlap);
 }
 
 }  // namespace comminute::breakage

@@ -20,8 +20,10 @@ ContactForces contact_at_rest(const Simulation& sim, double overlap, double r_i,
                               std::uint16_t a, double r_j, double m_j, std::uint16_t b,
                               const Vec3& normal, const ContactScratch& state);
 
-// Normal elastic energy (J) of a fresh contact with overlap `overlap` (0 when not touching).
-double overlap_energy(const Simulation& sim, double overlap, double r_i, double m_i,
-                      std::uint16_t a, double r_j, double m_j, std::uint16_t b);
+// Normal elastic energy (J) of a contact with overlap `overlap` (0 when not touching) between
+// sphere i (radius, material) and a sphere (r_j > 0) or a wall (r_j = 0): contact_at_rest()'s
+// normal_elastic_energy, taken from the law alone.
+double overlap_energy(const Simulation& sim, double overlap, double r_i, std::uint16_t a,
+                      double r_j, std::uint16_t b);
 
 }  // namespace comminute::breakage

@@ -143,9 +143,9 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
           w->contacts(p.x[i], r_new, 0.0, found);
           for (const auto& c : found)
             acc[0].wall_energy +=
-                overlap_energy(sim, c.overlap, r_new, p.mass[i], p.material[i], 0, 0, w->material) -
-                overlap_energy(sim, c.overlap - (r_new - r_before[i]), r_before[i], p.mass[i],
-                               p.material[i], 0, 0, w->material);
+                overlap_energy(sim, c.overlap, r_new, p.material[i], 0, w->material) -
+                overlap_energy(sim, c.overlap - (r_new - r_before[i]), r_before[i], p.material[i],
+                               0, w->material);
         }
       },
       [](GrowthTally a, const GrowthTally& b) {
@@ -177,10 +177,8 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
       const double before = r_before[i] + r_before[j] - dist,
                    after = p.radius[i] + p.radius[j] - dist;
       if (after <= 0) continue;
-      sum += overlap_energy(sim, after, p.radius[i], p.mass[i], p.material[i], p.radius[j],
-                            p.mass[j], p.material[j]) -
-             overlap_energy(sim, before, r_before[i], p.mass[i], p.material[i], r_before[j],
-                            p.mass[j], p.material[j]);
+      sum += overlap_energy(sim, after, p.radius[i], p.material[i], p.radius[j], p.material[j]) -
+             overlap_energy(sim, before, r_before[i], p.material[i], r_before[j], p.material[j]);
     }
     pair_energy[t] = sum;
   }

@@ -277,12 +277,12 @@ double Replacement::created_energy(const Simulation& sim, const std::vector<Outc
   for (std::size_t a = o.first; a < end; ++a) {
     for (std::size_t b = a + 1; b < end; ++b)
       created += overlap_energy(sim, p.radius[a] + p.radius[b] - norm(p.x[a] - p.x[b]), p.radius[a],
-                                p.mass[a], material, p.radius[b], p.mass[b], material);
+                                material, p.radius[b], material);
     for (const Neighbour& nb : *o.around) {
       auto with = [&](std::size_t j) {  // j, or one of its fragments, seen from the parent
         const Vec3 xj = sim.pair_frame(nb.parent_seen, nb.seen, p.x[j]);
         created += overlap_energy(sim, p.radius[a] + p.radius[j] - norm(p.x[a] - xj), p.radius[a],
-                                  p.mass[a], material, p.radius[j], p.mass[j], p.material[j]);
+                                  material, p.radius[j], p.material[j]);
       };
       const std::uint32_t j = nb.slot;
       if (batch[j] == 0) {
@@ -298,8 +298,7 @@ double Replacement::created_energy(const Simulation& sim, const std::vector<Outc
       found.clear();
       w->contacts(p.x[a], p.radius[a], 0.0, found);
       for (const auto& c : found)
-        created +=
-            overlap_energy(sim, c.overlap, p.radius[a], p.mass[a], material, 0, 0, w->material);
+        created += overlap_energy(sim, c.overlap, p.radius[a], material, 0, w->material);
     }
   }
   return created;

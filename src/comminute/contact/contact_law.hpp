@@ -83,6 +83,11 @@ class ContactLaw {
     b.for_each([this](const ContactKinematics& k, const PairParameters& p, const StateRef& s,
                       ContactForces& out) { compute(k, p, s, out); });
   }
+  // The normal elastic energy compute() reports (out.normal_elastic_energy) at overlap `delta` (m)
+  // for this effective radius (m), J: the same operations, so the same bits, without the friction
+  // and the contact's state (breakage's energy bookkeeping asks it for every growing contact).
+  virtual double normal_elastic_energy(const PairParameters& p, double effective_radius,
+                                       double delta) const = 0;
   // Normal stiffness at overlap `delta` (N/m), for energy partition.
   virtual double normal_stiffness(const PairParameters& p, double effective_radius,
                                   double effective_mass, double delta) const = 0;

@@ -191,6 +191,12 @@ class HertzMindlin final : public ContactLaw {
   }
 
  public:
+  double normal_elastic_energy(const PairParameters& p, double r, double delta) const override {
+    const double a = std::sqrt(r * delta);                          // radius_squared()'s root
+    const double kn = 2.0 / 3.0 * (2.0 * p.effective_modulus * a);  // normal_and_spring()
+    const double fel = kn * delta;
+    return 0.4 * fel * delta;
+  }
   double normal_stiffness(const PairParameters& p, double r, double, double delta) const override {
     return 2.0 * p.effective_modulus * std::sqrt(r * delta);  // dF/dδ = 2 E* sqrt(R* δ)
   }

@@ -39,6 +39,10 @@ class LinearSpringDashpot final : public ContactLawOf<LinearSpringDashpot> {
                        slots_.flag(s), out);
   }
 
+  double normal_elastic_energy(const PairParameters&, double, double delta) const override {
+    const double fel = kn_ * delta;  // compute()'s
+    return 0.5 * fel * delta;
+  }
   double normal_stiffness(const PairParameters&, double, double, double) const override {
     return kn_;
   }

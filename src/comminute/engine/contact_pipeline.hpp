@@ -65,6 +65,12 @@ class ContactPipeline {
     return layout_;
   }
   bool assembled() const { return law_ != nullptr; }
+  // The normal elastic energy evaluate() reports at rest (J): the law's alone (no sub-model adds
+  // to it), the same bits (ContactLaw::normal_elastic_energy).
+  double normal_elastic_energy(const PairParameters& p, double effective_radius,
+                               double delta) const {
+    return law_->normal_elastic_energy(p, effective_radius, delta);
+  }
   // A rolling-resistance model is part of the contact model (the only reader of
   // ContactKinematics::relative_angular_velocity and effective_inertia; the pair loop skips them
   // without one).

@@ -62,7 +62,7 @@ class HertzMindlin final : public ContactLaw {
     Column modulus, beta, shear, shear_root, mu, mu_dynamic, was;
     // the normal force (elastic, total), its energy, its dashpot's work; the rotated spring, k_t,
     // c_t, the Coulomb limits
-    Column elastic, normal, normal_energy, normal_damping, rx, ry, rz, kt, ct, stick, slide;
+    Column elastic, normal, normal_energy, normal_work, rx, ry, rz, kt, ct, stick, slide;
     // the friction law's results: the stored spring, the force, the dashpot's and the slip's work,
     // the spring's energy, the sliding flag (0 or 1)
     Column tx, ty, tz, fx, fy, fz, damping, friction, energy, now;
@@ -82,8 +82,8 @@ class HertzMindlin final : public ContactLaw {
         const StateRef s{b.slots, b.index[c0 + c]};
         Vec3& spring = s.vec3(slots_.spring);
         if (rescale_)
-          out[c].friction_dissipation +=
-              follow_stiffness(spring, s.f64(slots_.stiffness), mindlin(p, a[c]));
+          out[c].friction_dissipation += follow_stiffness(spring, s.f64(slots_.stiffness),
+                                                          mindlin(p.effective_shear_modulus, a[c]));
         nx[c] = k.normal.x;
         ny[c] = k.normal.y;
         nz[c] = k.normal.z;
@@ -108,16 +108,14 @@ class HertzMindlin final : public ContactLaw {
       // normal_and_spring() and tangential(), operation for operation; project_spring()'s two
       // cases chosen per contact, restore_length() applied
       for (std::size_t c = 0; c < n; ++c) {
-        const double sn = 2.0 * modulus[c] * a[c];  // S_n = 2 E* a
-        const double kn = 2.0 / 3.0 * sn;
-        const double gn = -2.0 * std::sqrt(5.0 / 6.0) * beta[c] * root[c];  // normal_damping()
-        const double fel = kn * delta[c];
+        const double fel = elastic_force(modulus[c], a[c], delta[c]);
+        const double gn = normal_damping(beta[c], root[c]);
         const double fd = gn * rate[c];
         const double fn = fel + fd;
         elastic[c] = fel;
         normal[c] = fn;
-        normal_energy[c] = 0.4 * fel * delta[c];
-        normal_damping[c] = fd * rate[c] * dt[c];
+        normal_energy[c] = elastic_energy(fel, delta[c]);
+        normal_work[c] = fd * rate[c] * dt[c];
         const double len2 = sx[c] * sx[c] + sy[c] * sy[c] + sz[c] * sz[c];
         const double along = sx[c] * nx[c] + sy[c] * ny[c] + sz[c] * nz[c];
         const double px = sx[c] - nx[c] * along, py = sy[c] - ny[c] * along,
@@ -129,7 +127,7 @@ class HertzMindlin final : public ContactLaw {
         rx[c] = (loaded ? px : sx[c]) * restore;
         ry[c] = (loaded ? py : sy[c]) * restore;
         rz[c] = (loaded ? pz : sz[c]) * restore;
-        kt[c] = 8.0 * shear[c] * a[c];  // mindlin()
+        kt[c] = mindlin(shear[c], a[c]);
         ct[c] = gn * shear_root[c];
         stick[c] = mu[c] * std::abs(fn);  // friction_limit()
         slide[c] = mu_dynamic[c] * std::abs(fn);
@@ -183,7 +181,7 @@ class HertzMindlin final : public ContactLaw {
         o.normal_force = normal[c];
         o.normal_elastic_energy = normal_energy[c];
         o.stored_energy = normal_energy[c] + energy[c];
-        o.damping_dissipation = normal_damping[c] + damping[c];
+        o.damping_dissipation = normal_work[c] + damping[c];
         o.friction_dissipation += friction[c];
         o.tangential_force = {fx[c], fy[c], fz[c]};
       }
@@ -192,10 +190,8 @@ class HertzMindlin final : public ContactLaw {
 
  public:
   double normal_elastic_energy(const PairParameters& p, double r, double delta) const override {
-    const double a = std::sqrt(r * delta);                          // radius_squared()'s root
-    const double kn = 2.0 / 3.0 * (2.0 * p.effective_modulus * a);  // normal_and_spring()
-    const double fel = kn * delta;
-    return 0.4 * fel * delta;
+    const double a = std::sqrt(r * delta);  // radius_squared()'s root
+    return elastic_energy(elastic_force(p.effective_modulus, a, delta), delta);
   }
   double normal_stiffness(const PairParameters& p, double r, double, double delta) const override {
     return 2.0 * p.effective_modulus * std::sqrt(r * delta);  // dF/dδ = 2 E* sqrt(R* δ)
@@ -218,30 +214,34 @@ class HertzMindlin final : public ContactLaw {
                                                            const StateRef& s, double a, double root,
                                                            ContactForces& out) const {
     const double delta = k.overlap;
-    const double sn = 2.0 * p.effective_modulus * a;  // S_n = 2 E* a
-    const double kn = 2.0 / 3.0 * sn;                 // F = (4/3) E* sqrt(R*) delta^1.5
-    const double gn = normal_damping(p, root);
-    const double fel = kn * delta;
-    const double fd = gn * k.overlap_rate;
+    const double fel = elastic_force(p.effective_modulus, a, delta);
+    const double fd = normal_damping(p.damping_beta, root) * k.overlap_rate;
     out.elastic_normal_force = fel;
     out.normal_force = fel + fd;
-    out.normal_elastic_energy = 0.4 * fel * delta;  // integral of F dδ = (2/5) k_n δ^2
+    out.normal_elastic_energy = elastic_energy(fel, delta);
     out.stored_energy = out.normal_elastic_energy;
     out.damping_dissipation = fd * k.overlap_rate * k.dt;
     if (rescale_)
-      out.friction_dissipation +=
-          follow_stiffness(s.vec3(slots_.spring), s.f64(slots_.stiffness), mindlin(p, a));
+      out.friction_dissipation += follow_stiffness(s.vec3(slots_.spring), s.f64(slots_.stiffness),
+                                                   mindlin(p.effective_shear_modulus, a));
     return project_spring(s.vec3(slots_.spring), k.normal);
   }
+  // The elastic normal force (N) at contact radius a (m) and overlap delta (m), E* = `modulus`
+  // (Pa): S_n = 2 E* a, F = (2/3) S_n delta = (4/3) E* sqrt(R*) delta^1.5.
+  static double elastic_force(double modulus, double a, double delta) {
+    const double sn = 2.0 * modulus * a;
+    const double kn = 2.0 / 3.0 * sn;
+    return kn * delta;
+  }
+  // Its integral from 0 to delta (J): (2/5) k_n delta^2 = (2/5) F delta.
+  static double elastic_energy(double force, double delta) { return 0.4 * force * delta; }
   // The normal dashpot c_n (N s/m): F_n,d = -2 sqrt(5/6) beta sqrt(S_n m*) v_n, beta <= 0 here
   // (Tsuji, Tanaka & Ishida, Powder Technol. 71 (1992) 239); `root`: sqrt(S_n m*).
-  static double normal_damping(const PairParameters& p, double root) {
-    return -2.0 * std::sqrt(5.0 / 6.0) * p.damping_beta * root;
+  static double normal_damping(double beta, double root) {
+    return -2.0 * std::sqrt(5.0 / 6.0) * beta * root;
   }
-  // Mindlin S_t = 8 G* a (N/m)
-  static double mindlin(const PairParameters& p, double a) {
-    return 8.0 * p.effective_shear_modulus * a;
-  }
+  // Mindlin S_t = 8 G* a (N/m), G* = `shear` (Pa)
+  static double mindlin(double shear, double a) { return 8.0 * shear * a; }
   // The friction law's coefficients: k_t (N/m), c_t (N s/m) and the Coulomb limits (N).
   struct Tangential {
     double kt = 0, ct = 0;
@@ -249,10 +249,10 @@ class HertzMindlin final : public ContactLaw {
   };
   Tangential tangential(const PairParameters& p, double a, double root,
                         const ContactForces& out) const {
-    const double gn = normal_damping(p, root);
+    const double gn = normal_damping(p.damping_beta, root);
     // the same root for S_t = 8 G* a: sqrt(S_t m*) = sqrt(S_n m*) sqrt(4 G* / E*)
     const double gt = tangential_damping_ ? gn * p.shear_normal_root : 0.0;
-    return {mindlin(p, a), gt, friction_limit(p, out.normal_force)};
+    return {mindlin(p.effective_shear_modulus, a), gt, friction_limit(p, out.normal_force)};
   }
 
   bool tangential_damping_;

@@ -88,9 +88,6 @@ class ContactLaw {
   // and the contact's state (breakage's energy bookkeeping asks it for every growing contact).
   virtual double normal_elastic_energy(const PairParameters& p, double effective_radius,
                                        double delta) const = 0;
-  // Normal stiffness at overlap `delta` (N/m), for energy partition.
-  virtual double normal_stiffness(const PairParameters& p, double effective_radius,
-                                  double effective_mass, double delta) const = 0;
   // Time-step limit for a contact between two particles of this radius (m) and mass (kg).
   virtual StepLimit step_limit(const PairParameters&, double /*radius*/, double /*mass*/) const {
     return {};

@@ -193,9 +193,6 @@ class HertzMindlin final : public ContactLaw {
     const double a = std::sqrt(r * delta);  // radius_squared()'s root
     return elastic_energy(elastic_force(p.effective_modulus, a, delta), delta);
   }
-  double normal_stiffness(const PairParameters& p, double r, double, double delta) const override {
-    return 2.0 * p.effective_modulus * std::sqrt(r * delta);  // dF/dδ = 2 E* sqrt(R* δ)
-  }
 
  private:
   // R* delta, whose root is the contact radius a (m^2)

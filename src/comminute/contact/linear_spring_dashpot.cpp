@@ -43,9 +43,6 @@ class LinearSpringDashpot final : public ContactLawOf<LinearSpringDashpot> {
     const double fel = kn_ * delta;  // compute()'s
     return 0.5 * fel * delta;
   }
-  double normal_stiffness(const PairParameters&, double, double, double) const override {
-    return kn_;
-  }
 
   // The contact time pi sqrt(m*/k_n) of the lightest pair (m* = m/2) resolved with 10 steps.
   StepLimit step_limit(const PairParameters&, double, double mass) const override {

@@ -214,22 +214,51 @@ TEST(BreakageEngine, CheckpointContinuesExactly) {
 // rebuilding it: after every step, every pair of spheres that overlaps must be in the list
 // (checked by brute force), while breakages happen between rebuilds. Three lattices: fragments of
 // fragments broken between two rebuilds and growing fragments are the cases that can slip out.
+// A fragment that took its parent's slot keeps the parent's pairs and wall candidates, but none
+// of its contacts: every pair and candidate of a particle born in the step must be fresh
+// (inactive, no tangential spring). The gas's parents may leave no fragment (all fines), so both
+// ways of replacing (in the parents' slots; parents removed, fragments appended) are taken.
 TEST(BreakageEngine, InPlaceNeighbourUpdateKeepsEveryContact) {
   for (std::uint64_t seed : {29, 6, 8}) {
     breakage::BreakageModule* module = nullptr;
     auto sim = breakage_gas(&module, 0.0012, seed);
     sim->setup();
-    std::uint64_t missing = 0, steps_with_breakage_without_rebuild = 0;
+    std::uint64_t missing = 0, steps_with_breakage_without_rebuild = 0, steps_in_slots = 0;
+    std::uint64_t stale_contacts = 0, born_contacts = 0;
+    const SlotId spring = sim->pair_state().vec3_slot("tangential_spring");
+    const SlotId wall_spring = sim->wall_state().vec3_slot("tangential_spring");
     for (int step = 0; step < 600; ++step) {
       const std::uint64_t rebuilds = sim->neighbor_rebuilds();
       const std::size_t n_before = sim->particles.size();
+      const std::uint64_t next_id = sim->particles.next_id();
+      const std::vector<std::uint64_t> ids_before = sim->particles.id;
       sim->step();
       const auto& p = sim->particles;
       const auto& nl = sim->pairs();
       // fragments arrived and the list already holds them, without a rebuild: the in-place path
-      if (p.size() != n_before && sim->neighbor_rebuilds() == rebuilds && nl.ids_at_build() == p.id)
+      if (p.id != ids_before && sim->neighbor_rebuilds() == rebuilds && nl.ids_at_build() == p.id) {
         ++steps_with_breakage_without_rebuild;
+        if (std::equal(ids_before.begin(), ids_before.end(), p.id.begin(),
+                       [&](std::uint64_t a, std::uint64_t b) { return b == a || b >= next_id; }) &&
+            p.size() >= n_before)
+          ++steps_in_slots;  // no slot lost its particle but to a new one: fragments in slots
+      }
       if (nl.ids_at_build() != p.id) continue;  // stale: a full rebuild comes before the forces
+      const auto born = [&](std::size_t s) { return p.id[s] >= next_id; };
+      const ContactStateStore& ps = sim->pair_state();
+      for (std::size_t k = 0; k < nl.size(); ++k)
+        if (born(nl.first[k]) || born(nl.second[k])) {
+          ++born_contacts;
+          if (ps.active[k] || !(ps.at(k).vec3(spring) == Vec3{})) ++stale_contacts;
+        }
+      const ContactStateStore& ws = sim->wall_state();
+      for (std::size_t q = 0; q < sim->wall_candidates().size(); ++q)
+        if (born(sim->wall_candidates()[q].particle)) {
+          ++born_contacts;
+          if (ws.active[q] || !(ws.at(q).vec3(wall_spring) == Vec3{}) ||
+              sim->wall_candidates()[q].id != p.id[sim->wall_candidates()[q].particle])
+            ++stale_contacts;
+        }
       std::set<std::pair<std::uint64_t, std::uint64_t>> listed;
       for (std::size_t k = 0; k < nl.size(); ++k)
         listed.insert(std::minmax(nl.ids_at_build()[nl.first[k]], nl.ids_at_build()[nl.second[k]]));
@@ -242,6 +271,9 @@ TEST(BreakageEngine, InPlaceNeighbourUpdateKeepsEveryContact) {
         }
     }
     EXPECT_GT(steps_with_breakage_without_rebuild, 0u) << "seed " << seed;
+    EXPECT_GT(steps_in_slots, 0u) << "seed " << seed;
+    EXPECT_GT(born_contacts, 0u) << "seed " << seed;
+    EXPECT_EQ(stale_contacts, 0u) << "seed " << seed;
     EXPECT_EQ(missing, 0u) << "seed " << seed;
   }
 }

@@ -58,14 +58,13 @@ std::unique_ptr<Simulation> sorting_breakage_gas(breakage::BreakageModule** modu
   return sim;
 }
 
-// Whether some fragment (id above the `n0` first particles) is stored before some first particle.
-bool fragment_stored_among_parents(const ParticleStore& p, std::uint64_t n0) {
-  std::size_t last_first = 0, first_fragment = p.size();
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.id[i] <= n0) last_first = i;
-    if (p.id[i] > n0) first_fragment = std::min(first_fragment, i);
-  }
-  return first_fragment < last_first;
+// Whether one of the `n0` first particles (ids 1..n0) is stored at slot n0 or beyond. Unsorted, a
+// store never moves a particle up: fragments take their parents' slots or are appended at the end,
+// removals move the rest down. A cell sort mixes the fragments in.
+bool first_particle_stored_beyond(const ParticleStore& p, std::uint64_t n0) {
+  for (std::size_t i = n0; i < p.size(); ++i)
+    if (p.id[i] <= n0) return true;
+  return false;
 }
 
 // Slot of each id (ids are 1..n).
@@ -172,10 +171,11 @@ TEST(CellSort, BreakageRunThatSortsRestartsBitForBit) {
 }
 
 TEST(CellSort, FragmentsAreSortedInOnceTheyAreAnEighthOfTheStore) {
-  // Fragments are appended at the end of the store. With sort_every = 1000 the periodic rule sorts
-  // only at the first rebuild; the second rule sorts at the first rebuild after the fragments
-  // appended since the last sort exceed an eighth of the store, so they end up among the first
-  // particles. Without sorting (sort_every = 0) they stay behind them: the check can tell.
+  // Fragments are appended at the end of the store (but for one per parent, in its slot). With
+  // sort_every = 1000 the periodic rule sorts only at the first rebuild; the second rule sorts at
+  // the first rebuild after the fragments appended since the last sort exceed an eighth of the
+  // store, so they end up among the first particles, which move up. Without sorting
+  // (sort_every = 0) the first particles stay in the first slots: the check can tell.
   breakage::BreakageModule *ma = nullptr, *mb = nullptr;
   auto never = sorting_breakage_gas(&ma, 0);
   auto rare = sorting_breakage_gas(&mb, 1000);
@@ -188,8 +188,8 @@ TEST(CellSort, FragmentsAreSortedInOnceTheyAreAnEighthOfTheStore) {
   ASSERT_GT(never->particles.size(), n0 + n0 / 8);
   ASSERT_GT(rare->particles.size(), n0 + n0 / 8);
   EXPECT_GT(rare->neighbor_rebuilds(), 1u);
-  EXPECT_FALSE(fragment_stored_among_parents(never->particles, n0));
-  EXPECT_TRUE(fragment_stored_among_parents(rare->particles, n0));
+  EXPECT_FALSE(first_particle_stored_beyond(never->particles, n0));
+  EXPECT_TRUE(first_particle_stored_beyond(rare->particles, n0));
 }
 
 TEST(CellSort, RestartKeepsTheCountOfFragmentsAppendedSinceTheLastSort) {

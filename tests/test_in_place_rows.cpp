@@ -105,3 +105,104 @@ TEST(InPlaceRows, EqualTheSerialInsertionOnOneAndTwoThreads) {
     EXPECT_EQ(two[r].kept_from, expected[r].kept_from) << "round " << r;
   }
 }
+
+namespace {
+
+struct Renewal {
+  std::vector<std::uint32_t> first, second, fresh, rows;
+  std::vector<std::uint64_t> ids;
+};
+
+// One round of renewal with `threads` threads on a bed of 16000: a tenth of the slots get a new,
+// smaller particle inside the old one's sphere (as a fragment in its parent's slot), 400 particles
+// are appended.
+// The reach spheres passed are the build's, but the renewed slots' are the spheres about their new
+// centres inside the old ones (as PairTracker::replace gives them).
+Renewal renewed(int threads, Renewal* expected) {
+  const double skin = 0.0002, box = 0.04;
+  Rng rng(23);
+  ParticleStore p = bed(rng, 16000, box);
+  NeighborList nl;
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  nl.build(p, skin);
+  std::vector<Vec3> x_build = p.x;
+  std::vector<double> r_build = p.radius;
+  const std::size_t n_old = p.size();
+  std::vector<std::uint8_t> is_renewed(n_old, 0);
+  for (std::size_t s = 0; s < n_old; ++s) {
+    if (rng.uniform() >= 0.1) continue;
+    is_renewed[s] = 1;
+    ParticleInit init;
+    init.radius = 0.5 * p.radius[s];
+    init.x = p.x[s] + Vec3{0.4 * p.radius[s], 0, 0};
+    init.density = 1000;
+    p.renew(s, init, 1e-6);
+    r_build[s] -= norm(p.x[s] - x_build[s]);
+    x_build[s] = p.x[s];
+  }
+  for (int k = 0; k < 400; ++k) {
+    ParticleInit init;
+    init.radius = k % 100 == 0 ? 0.005 : 0.0004 * rng.uniform(0.3, 1.0);
+    init.x = {rng.uniform(0, box), rng.uniform(0, box), rng.uniform(0, box)};
+    init.density = 1000;
+    p.add(init);
+    x_build.push_back(init.x);
+    r_build.push_back(init.radius);
+  }
+  if (expected) {  // the definition, from the list before the update
+    Renewal e{nl.first, nl.second, {}, {}, p.id};
+    for (std::size_t k = 0; k < nl.size(); ++k)
+      if (is_renewed[nl.first[k]] || is_renewed[nl.second[k]])
+        e.fresh.push_back(static_cast<std::uint32_t>(k));
+    for (std::size_t s = n_old; s < p.size(); ++s)
+      for (std::size_t j = 0; j < s; ++j) {
+        const double cut = r_build[s] + r_build[j] + skin;
+        if (norm2(x_build[s] - x_build[j]) < cut * cut) {
+          e.first.push_back(static_cast<std::uint32_t>(s));
+          e.second.push_back(static_cast<std::uint32_t>(j));
+        }
+      }
+    for (std::size_t i = 0; i <= p.size(); ++i)  // first pair whose owner is >= i
+      e.rows.push_back(static_cast<std::uint32_t>(
+          std::lower_bound(e.first.begin(), e.first.end(), static_cast<std::uint32_t>(i)) -
+          e.first.begin()));
+    *expected = std::move(e);
+  }
+  Renewal out;
+  out.fresh = nl.renew_in_place(p, is_renewed, x_build, r_build);
+  out.first = nl.first;
+  out.second = nl.second;
+  out.rows = nl.rows();
+  out.ids = nl.ids_at_build();
+  omp_set_num_threads(saved);
+  return out;
+}
+
+}  // namespace
+
+// Fragments in their parents' slots (NeighborList::renew_in_place): every pair stays where it is,
+// the appended particles' rows follow as in a serial insertion (against the renewed slots' new
+// reach spheres, which lie inside the old ones the index still holds), the pairs of the renewed
+// slots are named in pair order (their contact state starts afresh), the rows and ids follow the
+// store. The same on one and on two threads.
+TEST(InPlaceRows, RenewedSlotsKeepTheirPairsOnOneAndTwoThreads) {
+  Renewal expected;
+  const Renewal one = renewed(1, &expected);
+  const Renewal two = renewed(2, nullptr);
+  // a list long enough to be scanned on all threads (16384 pairs or more), renewed pairs in every
+  // thread's share of it, and appended rows to search
+  EXPECT_GT(expected.first.size(), 20000u);
+  EXPECT_GT(expected.fresh.size(), 100u);
+  EXPECT_GT(expected.fresh.back(), 3 * expected.fresh.front());
+  EXPECT_GT(std::count_if(expected.first.begin(), expected.first.end(),
+                          [](std::uint32_t s) { return s >= 16000; }),
+            100);
+  for (const Renewal* r : {&one, &two}) {
+    EXPECT_EQ(r->first, expected.first);
+    EXPECT_EQ(r->second, expected.second);
+    EXPECT_EQ(r->fresh, expected.fresh);
+    EXPECT_EQ(r->rows, expected.rows);
+    EXPECT_EQ(r->ids, expected.ids);
+  }
+}

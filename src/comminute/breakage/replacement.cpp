@@ -1,6 +1,7 @@
 #include "comminute/breakage/replacement.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <optional>
 #include <unordered_set>
 
@@ -127,28 +128,32 @@ void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
     if (ctx.mass_rule)  // (the rule books its split per parent: serial)
       for (Outcome& o : outcomes) ctx.mass_rule->share(p, o.parent, o.radii, o.masses);
     parallel_for_each(outcomes.size(), [&](std::size_t q) { place(sim, ctx, outcomes[q]); });
-    for (Outcome& o : outcomes) append(sim, ctx, o);
+    // Fragments into their parents' slots, so that nothing in the store, the pair list or the
+    // contact state moves; when a parent left no fragment (all fines), its slot must go: then
+    // the parents are removed and every fragment appended.
+    const bool in_slot = std::all_of(outcomes.begin(), outcomes.end(),
+                                     [](const Outcome& o) { return !o.placed.empty(); });
+    for (Outcome& o : outcomes) append(sim, ctx, o, in_slot);
     parallel_for_each(outcomes.size(), [&](std::size_t q) {
       Outcome& o = outcomes[q];
-      for (std::size_t s = o.first; s < o.first + o.placed.size(); ++s) ctx.born(s, o.rng);
+      for (const std::size_t s : o.slots) ctx.born(s, o.rng);
       o.created = created_energy(sim, outcomes, q, batch);
     });
     for (Outcome& o : outcomes) {
       ctx.ledger.create(sim, o.created);
       const Progeny& progeny = o.progeny;
       if (progeny.fines_mass > 0) {
-        ctx.ledger.add_fines(p.material[o.parent], progeny.fines_mass, p.v[o.parent]);
-        const double pe = -p.mass_scale(o.parent) * progeny.fines_mass *
-                          dot(sim.gravity, p.x[o.parent]);  // inertial
-        ctx.ledger.remove(sim, pe);
+        ctx.ledger.add_fines(p.material[o.parent], progeny.fines_mass, o.parent_v);
+        ctx.ledger.remove(sim, o.fines_pe);
       }
       o.rec.fines_mass = progeny.fines_mass;
       ctx.ledger.remove(sim, o.ke_out - o.ke_in);
       ctx.log.add_breakage(o.rec);
     }
-    p.compact();
-    sim.particles_replaced(fragments_added_);
+    if (!in_slot) p.compact();
+    sim.particles_replaced(fragments_added_, renewed_);
     fragments_added_.clear();
+    renewed_.clear();
     broken_ids_.clear();
     broken_records_.clear();
   }
@@ -223,17 +228,32 @@ void Replacement::place(const Simulation& sim, const Context& ctx, Outcome& o) c
       0.5 * inertial_mass * norm2(p.v[parent]) + 0.5 * p.inertia[parent] * norm2(p.w[parent]);
   for (std::size_t k = 0; k < o.placed.size(); ++k)
     o.ke_in += 0.5 * o.masses[k] * norm2(o.vel.v[k]) + 0.5 * o.inertia[k] * norm2(o.vel.w[k]);
+  o.parent_v = p.v[parent];
+  o.fines_pe = -p.mass_scale(parent) * o.progeny.fines_mass * dot(sim.gravity, p.x[parent]);
 }
 
-void Replacement::append(Simulation& sim, const Context& ctx, Outcome& o) {
+void Replacement::append(Simulation& sim, const Context& ctx, Outcome& o, bool in_slot) {
   auto& p = sim.particles;
   const std::size_t parent = o.parent;
   if (p.flags[parent] & pflag::growing) ctx.growth.dropped();
   const std::uint16_t material = p.material[parent];
+  const std::uint64_t parent_id = p.id[parent];
   const std::uint32_t generation =
       static_cast<std::uint32_t>(p.field(ctx.fields.generation)[parent]) + 1;
-  p.flags[parent] |= pflag::remove;
-  o.first = p.size();
+  std::vector<double> inherited(p.field_names().size());  // the parent's fields
+  for (std::size_t q = 0; q < inherited.size(); ++q) inherited[q] = p.field(q)[parent];
+  // the fragment that takes the parent's slot: the one with the most room inside the parent at
+  // its final size, so that growing it is least likely to call for a neighbour-list rebuild
+  std::size_t own = o.placed.size();
+  double room = -std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; in_slot && k < o.placed.size(); ++k) {
+    const double r = o.r_parent - norm(o.placed[k].x - p.x[parent]) - o.radii[k];
+    if (r > room) {
+      room = r;
+      own = k;
+    }
+  }
+  if (!in_slot) p.flags[parent] |= pflag::remove;
   for (std::size_t k = 0; k < o.placed.size(); ++k) {
     const Fragment& f = o.progeny.fragments[k];
     ParticleInit init;
@@ -245,16 +265,19 @@ void Replacement::append(Simulation& sim, const Context& ctx, Outcome& o) {
     init.flags = f.fines ? pflag::unbreakable : 0;
     const bool growing = o.placed[k].r < o.radii[k];
     if (growing) init.flags |= pflag::growing;
-    const std::uint64_t id = p.add_with_mass(init, o.masses[k]);
+    const std::uint64_t id =
+        k == own ? p.renew(parent, init, o.masses[k]) : p.add_with_mass(init, o.masses[k]);
+    const std::size_t s = k == own ? parent : p.size() - 1;
+    if (k == own) renewed_.push_back(static_cast<std::uint32_t>(s));
+    o.slots.push_back(s);
     fragments_added_.push_back({id, o.radii[k]});
     ctx.log.add_fragment(
-        {sim.time, p.id[parent], id, f.diameter, o.masses[k] / o.scales[k], generation, f.fines});
-    const std::size_t s = p.size() - 1;
+        {sim.time, parent_id, id, f.diameter, o.masses[k] / o.scales[k], generation, f.fines});
     p.inertia[s] = o.inertia[k];  // of the full-size sphere from the start
     // fields of the parent (composition and the like are inherited)
-    for (std::size_t q = 0; q < p.field_names().size(); ++q) p.field(q)[s] = p.field(q)[parent];
+    for (std::size_t q = 0; q < inherited.size(); ++q) p.field(q)[s] = inherited[q];
     p.field(ctx.fields.generation)[s] = generation;
-    p.field(ctx.fields.parent_id)[s] = static_cast<double>(p.id[parent]);
+    p.field(ctx.fields.parent_id)[s] = static_cast<double>(parent_id);
     p.field(ctx.fields.target)[s] = growing ? o.radii[k] : 0.0;
     if (ctx.rayleigh_floor > 0 && ctx.floor_rule == FloorRule::density_scaling)
       p.field(ctx.fields.mass_scale)[s] = o.scales[k];
@@ -271,13 +294,15 @@ double Replacement::created_energy(const Simulation& sim, const std::vector<Outc
   const auto& p = sim.particles;
   const Outcome& o = outcomes[q];
   const std::uint16_t material = p.material[o.parent];
-  const std::size_t end = o.first + o.placed.size();
   double created = 0;
   std::vector<WallContact> found;
-  for (std::size_t a = o.first; a < end; ++a) {
-    for (std::size_t b = a + 1; b < end; ++b)
+  for (std::size_t ka = 0; ka < o.slots.size(); ++ka) {
+    const std::size_t a = o.slots[ka];
+    for (std::size_t kb = ka + 1; kb < o.slots.size(); ++kb) {
+      const std::size_t b = o.slots[kb];
       created += overlap_energy(sim, p.radius[a] + p.radius[b] - norm(p.x[a] - p.x[b]), p.radius[a],
                                 material, p.radius[b], material);
+    }
     for (const Neighbour& nb : *o.around) {
       auto with = [&](std::size_t j) {  // j, or one of its fragments, seen from the parent
         const Vec3 xj = sim.pair_frame(nb.parent_seen, nb.seen, p.x[j]);
@@ -292,7 +317,7 @@ double Replacement::created_energy(const Simulation& sim, const std::vector<Outc
       // a neighbour that broke in this batch: its fragments are the neighbours now
       const Outcome& other = outcomes[batch[j] - 1];
       if (batch[j] - 1 < q)
-        for (std::size_t g = other.first; g < other.first + other.placed.size(); ++g) with(g);
+        for (const std::size_t g : other.slots) with(g);
     }
     for (const auto& w : sim.walls) {
       found.clear();

@@ -77,16 +77,21 @@ class Replacement {
     std::vector<Sphere> placed;  // starting centres and radii
     FragmentVelocities vel;
     double ke_out = 0, ke_in = 0;  // J: kinetic energy of the parent, of its fragments
-    Rng rng;                       // the parent's breakage stream, left at its fragments' strengths
-    std::size_t first = 0;         // slot of its first fragment once appended
-    double created = 0;            // J: elastic energy of its fragments' starting overlaps
+    Vec3 parent_v;                 // m/s: the parent's velocity (its fines leave with it)
+    double fines_pe =
+        0;    // J: potential energy of the fines' mass at the parent's centre (inertial)
+    Rng rng;  // the parent's breakage stream, left at its fragments' strengths
+    std::vector<std::size_t> slots;  // of its fragments once in the store
+    double created = 0;              // J: elastic energy of its fragments' starting overlaps
   };
   // Progeny sizes and masses (o.parent, o.rec and o.around set).
   void draw(const Simulation& sim, const Context& ctx, Outcome& o) const;
   // Placement inside the parent and the fragments' velocities (after the mass rule).
   void place(const Simulation& sim, const Context& ctx, Outcome& o) const;
-  // Appends the fragments (serial: slots and ids in parent order).
-  void append(Simulation& sim, const Context& ctx, Outcome& o);
+  // Puts the fragments in the store (serial: slots and ids in parent order). in_slot: the one with
+  // the most room inside the parent takes the parent's slot (ParticleStore::renew), the others
+  // are appended; else all are appended and the parent is marked for removal.
+  void append(Simulation& sim, const Context& ctx, Outcome& o, bool in_slot);
   // Elastic energy of the starting overlaps of outcome q's fragments with their siblings, the
   // neighbours and the walls; a neighbour that broke in this batch counts by its fragments, once
   // per pair of families (from the later parent). batch[j]: 1 + the outcome of slot j, or 0.
@@ -97,7 +102,8 @@ class Replacement {
   int interval_;
   std::vector<std::uint64_t> broken_ids_;  // found in post_force
   std::vector<EventRecord> broken_records_;
-  std::vector<NewFragment> fragments_added_;  // appended this step
+  std::vector<NewFragment> fragments_added_;  // put in the store this step
+  std::vector<std::uint32_t> renewed_;        // parents' slots a fragment took this step
 };
 
 }  // namespace comminute::breakage

@@ -100,6 +100,15 @@ void ContactStateStore::clear(std::size_t k) {
   for (auto& c : f64_) c.data[k] = 0.0;
 }
 
+void ContactStateStore::renew(const std::vector<std::uint32_t>& fresh, std::size_t size) {
+  for (const std::uint32_t k : fresh) clear(k);
+  active.resize(size, 0);
+  for (auto& c : vec3_) c.data.resize(size, Vec3{});
+  for (auto& c : f32_) c.data.resize(size, 0.0f);
+  for (auto& c : f64_) c.data.resize(size, 0.0);
+  refresh();
+}
+
 void ContactStateStore::move(std::size_t from, std::size_t to) {
   for (auto& c : vec3_) c.data[to] = c.data[from];
   for (auto& c : f32_) c.data[to] = c.data[from];

@@ -103,6 +103,9 @@ class ContactStateStore {
   // from[k] >= k (breakage's in-place list updates) and the arrays have room; else a parallel
   // copy into new arrays. No spare array is kept between calls.
   void gather(const std::vector<std::uint32_t>& from);
+  // The same contacts, those listed in `fresh` (ascending) started afresh, and fresh contacts
+  // appended up to `size` (breakage's fragments renewed in their parents' slots).
+  void renew(const std::vector<std::uint32_t>& fresh, std::size_t size);
   // An empty store with the same slots.
   ContactStateStore same_layout() const;
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <tuple>
 #include <unordered_map>
 
@@ -192,26 +193,63 @@ void PairTracker::build_wall_candidates(const ParticleStore& p, const Walls& wal
   wall_candidates_.swap(fresh);
 }
 
+std::optional<std::unordered_map<std::uint64_t, double>> PairTracker::final_radii(
+    const ParticleStore& p, const std::vector<NewFragment>& fragments, std::size_t n_kept) {
+  std::unordered_map<std::uint64_t, double> final_radius;  // by fragment id
+  for (const auto& f : fragments) final_radius[f.id] = f.final_radius;
+  for (std::size_t s = n_kept; s < p.size(); ++s)
+    if (final_radius.count(p.id[s]) == 0) return std::nullopt;  // something else was inserted
+  return final_radius;
+}
+
+void PairTracker::reach_of_appended(const ParticleStore& p, std::size_t n_kept,
+                                    const std::unordered_map<std::uint64_t, double>& final_radius,
+                                    std::vector<std::uint32_t>& tracked) {
+  // a fragment's reach sphere at "build" is where it is now at its final size: growth up to that
+  // size then never invalidates the list; the pruned list keeps all its pairs until the next prune
+  x_at_build_.resize(p.size());
+  r_at_build_.resize(p.size());
+  for (std::size_t s = n_kept; s < p.size(); ++s) {
+    x_at_build_[s] = p.x[s];
+    r_at_build_[s] = std::max(p.radius[s], final_radius.at(p.id[s]));
+    tracked.push_back(static_cast<std::uint32_t>(s));
+  }
+}
+
+void PairTracker::wall_candidates_of_appended(const ParticleStore& p, const Walls& walls,
+                                              double skin, std::size_t n_kept,
+                                              WallElementLists& lists,
+                                              std::vector<WallContactRecord>& into) const {
+  std::vector<WallContact> found;
+  std::vector<std::uint32_t> elements;
+  for (std::size_t s = n_kept; s < p.size(); ++s)
+    for (std::uint32_t w = 0; w < walls.size(); ++w) {
+      add_wall_candidates(p, walls, static_cast<std::uint32_t>(s), w, x_at_build_[s],
+                          r_at_build_[s], skin, elements, found, into);
+      if (lists.on(w)) lists.append(w, elements);
+    }
+}
+
 bool PairTracker::replace(const ParticleStore& p, const Walls& walls, double skin,
-                          const std::vector<NewFragment>& fragments, ContactStateStore& pair_state,
+                          const std::vector<NewFragment>& fragments,
+                          const std::vector<std::uint32_t>& renewed, ContactStateStore& pair_state,
                           ContactStateStore& wall_state) {
   if (stale_ || skin <= 0 || !nlist_.can_update_in_place()) return false;
+  if (!renewed.empty()) return renew(p, walls, skin, fragments, renewed, pair_state, wall_state);
   const std::vector<std::uint32_t> to_new = nlist_.slots_after_removal(p);
   const std::size_t n_kept = static_cast<std::size_t>(std::count_if(
       to_new.begin(), to_new.end(), [](std::uint32_t s) { return s != NeighborList::none; }));
-  std::unordered_map<std::uint64_t, double> final_radius;  // by fragment id
-  for (const auto& f : fragments) final_radius[f.id] = f.final_radius;
-  bool known = !to_new.empty() && p.size() - n_kept == fragments.size();
-  for (std::size_t s = n_kept; known && s < p.size(); ++s) known = final_radius.count(p.id[s]) > 0;
-  if (!known) return false;  // something else was inserted or moved: rebuild
+  if (to_new.empty() || p.size() - n_kept != fragments.size()) return false;
+  const auto final_radius = final_radii(p, fragments, n_kept);
+  if (!final_radius) return false;
   // the kept reach spheres move to their new slots (distinct targets: on all threads) in spare
   // arrays kept between updates, swapped in below
   std::vector<Vec3>& x_build = x_spare_;
   std::vector<double>& r_build = r_spare_;
   make_room(x_build, p.size());
   make_room(r_build, p.size());
-  x_build.resize(p.size());
-  r_build.resize(p.size());
+  x_build.resize(n_kept);
+  r_build.resize(n_kept);
   const auto n_old = static_cast<std::ptrdiff_t>(to_new.size());
 #pragma omp parallel for schedule(static) if (n_old >= 16384)
   for (std::ptrdiff_t o = 0; o < n_old; ++o) {
@@ -224,15 +262,9 @@ bool PairTracker::replace(const ParticleStore& p, const Walls& walls, double ski
   std::vector<std::uint32_t> tracked;
   for (std::uint32_t s : reach_tracked_)
     if (to_new[s] != NeighborList::none) tracked.push_back(to_new[s]);
-  // a fragment's reach sphere at "build" is where it is now at its final size: growth up to that
-  // size then never invalidates the list; the pruned list keeps all its pairs until the next prune
-  for (std::size_t s = n_kept; s < p.size(); ++s) {
-    x_build[s] = p.x[s];
-    r_build[s] = std::max(p.radius[s], final_radius[p.id[s]]);
-    tracked.push_back(static_cast<std::uint32_t>(s));
-  }
   x_at_build_.swap(x_build);
   r_at_build_.swap(r_build);
+  reach_of_appended(p, n_kept, *final_radius, tracked);
   reach_tracked_.swap(tracked);
   nlist_.update_in_place(p, to_new, x_at_build_, r_at_build_);
   // replacements come in bursts, one per step, and a fragment flies fast, so carrying the pruned
@@ -252,19 +284,67 @@ bool PairTracker::replace(const ParticleStore& p, const Walls& walls, double ski
     kept.push_back(r);
     state_from.push_back(static_cast<std::uint32_t>(q));
   }
-  std::vector<WallContact> found;
-  std::vector<std::uint32_t> elements;
   WallElementLists lists = wall_elements_.remapped(to_new, n_kept, NeighborList::none);
-  for (std::size_t s = n_kept; s < p.size(); ++s)
-    for (std::uint32_t w = 0; w < walls.size(); ++w) {
-      add_wall_candidates(p, walls, static_cast<std::uint32_t>(s), w, x_at_build_[s],
-                          r_at_build_[s], skin, elements, found, kept);
-      if (lists.on(w)) lists.append(w, elements);
-    }
+  wall_candidates_of_appended(p, walls, skin, n_kept, lists, kept);
   wall_elements_ = std::move(lists);
   state_from.resize(kept.size(), NeighborList::none);
   wall_candidates_.swap(kept);
   wall_state.gather(state_from);
+  return true;
+}
+
+bool PairTracker::renew(const ParticleStore& p, const Walls& walls, double skin,
+                        const std::vector<NewFragment>& fragments,
+                        const std::vector<std::uint32_t>& renewed, ContactStateStore& pair_state,
+                        ContactStateStore& wall_state) {
+  // the store must hold the particles of the lists, but for new ones in the renewed slots, and
+  // then the appended fragments
+  const std::vector<std::uint64_t>& ids = nlist_.ids_at_build();
+  const std::size_t n_old = ids.size();
+  if (p.size() < n_old || x_at_build_.size() != n_old ||
+      p.size() - n_old + renewed.size() != fragments.size())
+    return false;
+  const auto final_radius = final_radii(p, fragments, n_old);
+  if (!final_radius) return false;
+  std::vector<std::uint8_t> is_renewed(n_old, 0);
+  for (const std::uint32_t s : renewed) {
+    if (s >= n_old || final_radius->count(p.id[s]) == 0) return false;
+    is_renewed[s] = 1;
+  }
+  bool same = true;
+  const auto sn = static_cast<std::ptrdiff_t>(n_old);
+#pragma omp parallel for schedule(static) reduction(&& : same) if (sn >= 16384)
+  for (std::ptrdiff_t s = 0; s < sn; ++s)
+    same = same && (is_renewed[static_cast<std::size_t>(s)] != 0 ||
+                    p.id[static_cast<std::size_t>(s)] == ids[static_cast<std::size_t>(s)]);
+  if (!same) return false;
+  // A renewed slot's new particle lies inside the sphere the old one had at its last position,
+  // which lay within skin/2 of its reach sphere at build (x_b, r_b): the sphere about the new
+  // particle's centre x inside (x_b, r_b), radius r_b - |x - x_b| (negative when the particle is
+  // smaller than skin/2 and off-centre), is its reach sphere. Every sphere its pairs must hold is
+  // within skin of it, so within skin of (x_b, r_b): the old particle's pairs cover the new one.
+  for (const std::uint32_t s : renewed) {
+    r_at_build_[s] -= norm(p.x[s] - x_at_build_[s]);
+    x_at_build_[s] = p.x[s];
+    reach_tracked_.push_back(s);
+  }
+  reach_of_appended(p, n_old, *final_radius, reach_tracked_);
+  const std::vector<std::uint32_t> fresh_pairs =
+      nlist_.renew_in_place(p, is_renewed, x_at_build_, r_at_build_);
+  pair_state.renew(fresh_pairs, nlist_.size());
+  pause_pruning();  // (as after update_in_place)
+  // wall candidates: those of a renewed slot are the new particle's, afresh; the appended
+  // fragments' found at their reach spheres
+  std::vector<std::uint32_t> fresh;
+  for (std::size_t q = 0; q < wall_candidates_.size(); ++q) {
+    WallContactRecord& c = wall_candidates_[q];
+    if (c.particle < n_old && is_renewed[c.particle]) {
+      c.id = p.id[c.particle];
+      fresh.push_back(static_cast<std::uint32_t>(q));
+    }
+  }
+  wall_candidates_of_appended(p, walls, skin, n_old, wall_elements_, wall_candidates_);
+  wall_state.renew(fresh, wall_candidates_.size());
   return true;
 }
 

@@ -6,6 +6,8 @@
 // parents by fragments. It carries the engine's contact state through both.
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include "comminute/contact/contact_state.hpp"
@@ -63,13 +65,17 @@ class PairTracker {
   bool update(ParticleStore& p, const Walls& walls, SimulationOptions& options,
               ContactStateStore& pair_state, ContactStateStore& wall_state,
               const std::vector<std::uint64_t>* labels = nullptr);
-  // After compact() removed parents and their fragments were appended: updates both lists in
-  // place. Each fragment gets every partner within skin of its sphere at its final radius, so the
-  // skin/2 trigger stays exact and growth needs no rebuild. False when that is not possible (the
-  // caller then invalidates).
+  // After breakage replaced parents by fragments: updates both lists in place. Either the parents
+  // were removed by compact() and all fragments appended (`renewed` empty), or one fragment of
+  // each parent took its parent's slot (ParticleStore::renew; `renewed` lists those slots) and the
+  // others were appended, nothing removed: then every pair stays where it is and only the renewed
+  // slots' contacts start afresh. Each appended fragment gets every partner within skin of its
+  // sphere at its final radius, so the skin/2 trigger stays exact and growth needs no rebuild.
+  // `fragments` lists every fragment, renewed or appended. False when an update in place is not
+  // possible (the caller then invalidates).
   bool replace(const ParticleStore& p, const Walls& walls, double skin,
-               const std::vector<NewFragment>& fragments, ContactStateStore& pair_state,
-               ContactStateStore& wall_state);
+               const std::vector<NewFragment>& fragments, const std::vector<std::uint32_t>& renewed,
+               ContactStateStore& pair_state, ContactStateStore& wall_state);
   // How much particle i may still move or grow (m) before the lists stop covering it.
   double reach_margin(const ParticleStore& p, std::size_t i, double skin) const;
 
@@ -112,6 +118,21 @@ class PairTracker {
                            std::vector<std::uint32_t>& elements, std::vector<WallContact>& found,
                            std::vector<WallContactRecord>& into) const;
   double reach_change(const ParticleStore& p, std::size_t i) const;  // |x - x_b| + r - r_b
+  // replace() with fragments in their parents' slots.
+  bool renew(const ParticleStore& p, const Walls& walls, double skin,
+             const std::vector<NewFragment>& fragments, const std::vector<std::uint32_t>& renewed,
+             ContactStateStore& pair_state, ContactStateStore& wall_state);
+  // The fragments' final radii by id; nothing when a slot from n_kept on holds another particle.
+  static std::optional<std::unordered_map<std::uint64_t, double>> final_radii(
+      const ParticleStore& p, const std::vector<NewFragment>& fragments, std::size_t n_kept);
+  // Reach spheres of the fragments appended from slot n_kept on (tracked from now on).
+  void reach_of_appended(const ParticleStore& p, std::size_t n_kept,
+                         const std::unordered_map<std::uint64_t, double>& final_radius,
+                         std::vector<std::uint32_t>& tracked);
+  // Candidates (and element lists) of the fragments appended from slot n_kept on.
+  void wall_candidates_of_appended(const ParticleStore& p, const Walls& walls, double skin,
+                                   std::size_t n_kept, WallElementLists& lists,
+                                   std::vector<WallContactRecord>& into) const;
   void pause_pruning();  // the whole list is visited until the next rebuild
 
   NeighborList nlist_;

@@ -79,13 +79,15 @@ void Simulation::report_non_finite() const {
   throw SimulationError(fmt::format("non-finite particle state at t = {:.9g} s", time));
 }
 
-void Simulation::particles_replaced(const std::vector<NewFragment>& fragments) {
-  tracker_.appended(fragments.size());
+void Simulation::particles_replaced(const std::vector<NewFragment>& fragments,
+                                    const std::vector<std::uint32_t>& renewed) {
+  tracker_.appended(fragments.size() - renewed.size());
   if (ghosts_.active()) {  // the ghosts are planned anew from the fragments at a rebuild
     particles_changed();
     return;
   }
-  if (tracker_.replace(particles, walls, options.skin, fragments, pair_state_, wall_state_))
+  if (tracker_.replace(particles, walls, options.skin, fragments, renewed, pair_state_,
+                       wall_state_))
     forces_cleared_ = false;
   else
     particles_changed();

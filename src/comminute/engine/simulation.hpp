@@ -90,12 +90,15 @@ class Simulation {
     tracker_.invalidate();
     forces_cleared_ = false;
   }
-  // After compact() removed broken parents and their fragments were appended: updates the
-  // neighbour list in place instead of rebuilding it. Each fragment gets every partner within
-  // skin of its sphere at its final radius (a local search of the build's cell grids), so the
-  // usual skin/2 trigger stays exact and growth needs no rebuild. Falls back to
-  // particles_changed() when the update is not possible.
-  void particles_replaced(const std::vector<NewFragment>& fragments);
+  // After breakage replaced parents by fragments (`fragments`, all of them): either compact()
+  // removed the parents and every fragment was appended (`renewed` empty), or one fragment of
+  // each parent took its parent's slot (ParticleStore::renew; `renewed` lists those slots) and
+  // the others were appended. Updates the neighbour list in place instead of rebuilding it. Each
+  // appended fragment gets every partner within skin of its sphere at its final radius (a local
+  // search of the build's cell grids), so the usual skin/2 trigger stays exact and growth needs
+  // no rebuild. Falls back to particles_changed() when the update is not possible.
+  void particles_replaced(const std::vector<NewFragment>& fragments,
+                          const std::vector<std::uint32_t>& renewed);
   // How much particle i may still move or grow (m) before the neighbour list stops covering it:
   // skin/2 - (|x - x_build| + r - r_build). Radii may change between rebuilds only for particles
   // flagged pflag::growing (and fragments); a module that grows one by more than this margin must
@@ -109,6 +112,10 @@ class Simulation {
   const ContactStateStore& pair_state() const { return pair_state_; }
   const ContactStateStore& wall_state() const { return wall_state_; }
   const std::vector<WallContactRecord>& wall_contacts() const { return wall_contacts_; }
+  // Every particle–wall candidate of the lists, indexed like wall_state().
+  const std::vector<WallContactRecord>& wall_candidates() const {
+    return tracker_.wall_candidates();
+  }
   // The contacts that ended in the last force computation (pairs, then walls, in list order),
   // when the contact model keeps the collision record (a module asked for it); else empty.
   const std::vector<EndedContact>& ended_contacts() const { return ended_contacts_; }

@@ -335,6 +335,23 @@ void NeighborList::update_in_place(const ParticleStore& p, const std::vector<std
       n_kept = std::size_t{to_new[old]} + 1;
       break;
     }
+  append_rows(n_kept, n, x_build, r_build);
+  kept_from_.resize(first.size(), none);
+  std::vector<std::uint8_t> large(n, 0);
+  const auto n_old = static_cast<std::ptrdiff_t>(to_new.size());
+#pragma omp parallel for schedule(static) if (to_new.size() >= kThreadedLoop)
+  for (std::ptrdiff_t old = 0; old < n_old; ++old)
+    if (to_new[static_cast<std::size_t>(old)] != none)
+      large[to_new[static_cast<std::size_t>(old)]] = large_[static_cast<std::size_t>(old)];
+  large_ = std::move(large);
+  ids_.resize(n);  // ids_ = p.id, on all threads
+#pragma omp parallel for schedule(static) if (n >= kThreadedLoop)
+  for (std::size_t s = 0; s < n; ++s) ids_[s] = p.id[s];
+  make_rows(n);
+}
+
+void NeighborList::append_rows(std::size_t n_kept, std::size_t n, const std::vector<Vec3>& x_build,
+                               const std::vector<double>& r_build) {
   // rows of the appended particles (the highest slots) follow the kept rows: grouping by owner
   // holds; each row sorted, so the list does not depend on the index's layout. Appended particle
   // s pairs with every kept particle and every appended one before it (j < s): all are indexed
@@ -355,25 +372,47 @@ void NeighborList::update_in_place(const ParticleStore& p, const std::vector<std
     });
     std::sort(row.begin(), row.end());
   }
-  for (std::size_t q = 0; q < n_new; ++q) {
-    const auto fs = static_cast<std::uint32_t>(n_kept + q);
+  for (std::size_t q = 0; q < n_new; ++q)
     for (std::uint32_t j : rows[q]) {
-      first.push_back(fs);
+      first.push_back(static_cast<std::uint32_t>(n_kept + q));
       second.push_back(j);
-      kept_from_.push_back(none);
     }
+}
+
+std::vector<std::uint32_t> NeighborList::renew_in_place(const ParticleStore& p,
+                                                        const std::vector<std::uint8_t>& renewed,
+                                                        const std::vector<Vec3>& x_build,
+                                                        const std::vector<double>& r_build) {
+  const std::size_t n_old = ids_.size(), n = p.size(), m_old = first.size();
+  // the pairs of the renewed slots (found on all threads, in pair order): a fragment in its
+  // parent's slot keeps the parent's pairs, which cover it (it lies inside the parent's reach
+  // sphere), but none of the parent's contacts
+  const auto touches = [&](std::size_t k) { return (renewed[first[k]] | renewed[second[k]]) != 0; };
+  const int nt = m_old >= kThreadedLoop ? max_threads() : 1;
+  std::vector<std::vector<std::uint32_t>> found(static_cast<std::size_t>(nt));
+#pragma omp parallel num_threads(nt)
+  {
+    const auto t = static_cast<std::size_t>(thread_id()), ut = static_cast<std::size_t>(nt);
+    for (std::size_t k = m_old * t / ut; k < m_old * (t + 1) / ut; ++k)
+      if (touches(k)) found[t].push_back(static_cast<std::uint32_t>(k));
   }
-  std::vector<std::uint8_t> large(n, 0);
-  const auto n_old = static_cast<std::ptrdiff_t>(to_new.size());
-#pragma omp parallel for schedule(static) if (to_new.size() >= kThreadedLoop)
-  for (std::ptrdiff_t old = 0; old < n_old; ++old)
-    if (to_new[static_cast<std::size_t>(old)] != none)
-      large[to_new[static_cast<std::size_t>(old)]] = large_[static_cast<std::size_t>(old)];
-  large_ = std::move(large);
-  ids_.resize(n);  // ids_ = p.id, on all threads
-#pragma omp parallel for schedule(static) if (n >= kThreadedLoop)
-  for (std::size_t s = 0; s < n; ++s) ids_[s] = p.id[s];
-  make_rows(n);
+  std::vector<std::uint32_t> fresh;
+  for (const auto& f : found) fresh.insert(fresh.end(), f.begin(), f.end());
+  append_rows(n_old, n, x_build, r_build);
+  large_.resize(n, 0);
+  ids_.resize(n);
+  for (std::size_t s = 0; s < n_old; ++s)
+    if (renewed[s]) ids_[s] = p.id[s];
+  for (std::size_t s = n_old; s < n; ++s) ids_[s] = p.id[s];
+  // the rows of the kept owners are unchanged; the appended owners' rows follow
+  row_.resize(n + 1);
+  std::size_t k = m_old;
+  for (std::size_t i = n_old; i <= n; ++i) {
+    while (k < first.size() && first[k] < i) ++k;
+    row_[i] = static_cast<std::uint32_t>(k);
+  }
+  kept_from_.clear();
+  return fresh;
 }
 
 void NeighborList::rebuild_index(const std::vector<Vec3>& x_build,

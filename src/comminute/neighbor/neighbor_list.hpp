@@ -57,6 +57,16 @@ class NeighborList {
   void update_in_place(const ParticleStore& p, const std::vector<std::uint32_t>& to_new,
                        const std::vector<Vec3>& x_build, const std::vector<double>& r_build);
   const std::vector<std::uint32_t>& kept_from() const { return kept_from_; }
+  // In-place update after particles were renewed in their slots (ParticleStore::renew: a fragment
+  // in its parent's slot; renewed[s] = 1 for such a slot s of the list) and new ones appended,
+  // nothing removed: every pair is kept where it is, and the appended particles get their rows as
+  // in update_in_place(). A renewed slot keeps its reach sphere at build (x_build, r_build hold
+  // the parent's): its new particle must lie inside it. Returns the pairs of the renewed slots,
+  // ascending (their contact state must start afresh); kept_from() is empty after it.
+  std::vector<std::uint32_t> renew_in_place(const ParticleStore& p,
+                                            const std::vector<std::uint8_t>& renewed,
+                                            const std::vector<Vec3>& x_build,
+                                            const std::vector<double>& r_build);
   bool can_update_in_place() const { return index_.valid(); }
   // Re-creates the spatial index of the reach spheres after restore() (checkpoints).
   void rebuild_index(const std::vector<Vec3>& x_build, const std::vector<double>& r_build,
@@ -84,6 +94,9 @@ class NeighborList {
   double skin_ = 0;                       // m, of the last build
   Carry carry_;                           // of the last build
   std::vector<std::uint32_t> kept_from_;  // of the last in-place update
+  // Rows of the appended particles n_kept .. n - 1 (update_in_place, renew_in_place).
+  void append_rows(std::size_t n_kept, std::size_t n, const std::vector<Vec3>& x_build,
+                   const std::vector<double>& r_build);
   // scratch reused between builds
   void plan_carry(const ParticleStore& p, const std::vector<std::uint8_t>& keep,
                   const std::vector<std::uint64_t>* labels);

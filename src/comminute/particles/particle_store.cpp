@@ -32,6 +32,23 @@ std::uint64_t ParticleStore::add_with_mass(const ParticleInit& p, double m) {
   return next_id_++;
 }
 
+std::uint64_t ParticleStore::renew(std::size_t i, const ParticleInit& p, double m) {
+  if (!ghost_owner.empty()) throw Error("ParticleStore::renew() with ghosts present");
+  x[i] = p.x;
+  v[i] = p.v;
+  w[i] = p.w;
+  f[i] = {};
+  t[i] = {};
+  radius[i] = p.radius;
+  mass[i] = m;
+  inertia[i] = 0.4 * m * p.radius * p.radius;
+  id[i] = next_id_;
+  material[i] = p.material;
+  flags[i] = p.flags;
+  for (std::size_t k = 0; k < fields_.size(); ++k) fields_[k][i] = field_defaults_[k];
+  return next_id_++;
+}
+
 namespace {
 template <class T>
 // Drops the elements at `removed` (ascending slots): the runs between them are moved down in

@@ -63,6 +63,10 @@ class ParticleStore {
   std::uint64_t add(const ParticleInit& p);
   // Adds with an explicit mass (fragments carry their final mass while still growing).
   std::uint64_t add_with_mass(const ParticleInit& p, double mass);
+  // Puts a new particle (fresh id, fields at their defaults, zero force and torque) in slot i in
+  // place of the one there: breakage writes a fragment into its parent's slot, so that nothing
+  // after it moves. Returns the id.
+  std::uint64_t renew(std::size_t i, const ParticleInit& p, double mass);
   // Removes all particles whose flags have pflag::remove; keeps the order of the others.
   // Returns the number removed. Neither this nor permute() may run while ghosts are present.
   std::size_t compact();

@@ -170,7 +170,8 @@ Renewal renewed(int threads, Renewal* expected) {
     *expected = std::move(e);
   }
   Renewal out;
-  out.fresh = nl.renew_in_place(p, is_renewed, x_build, r_build);
+  out.fresh = nl.pairs_flagged(is_renewed);
+  nl.renew_in_place(p, x_build, r_build);
   out.first = nl.first;
   out.second = nl.second;
   out.rows = nl.rows();

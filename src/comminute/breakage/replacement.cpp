@@ -66,10 +66,7 @@ void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
       const auto u = static_cast<std::size_t>(s);
       parent_slot[u] = batch[u < p.owned() ? u : sim.slot_owner(u)] != 0 ? 1 : 0;
     }
-    const auto touches_parent = [&](std::size_t k) {
-      return (parent_slot[nl.first[k]] | parent_slot[nl.second[k]]) != 0;
-    };
-    const std::vector<std::uint32_t> hits = parallel_filter(nl.size(), touches_parent);
+    const std::vector<std::uint32_t>& hits = sim.pairs_flagged(parent_slot);
     // elastic energy that leaves with the parents' contacts: worked out on all threads, booked
     // in pair order
     std::vector<std::optional<double>> leaving(hits.size());

@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 
 #include "comminute/core/error.hpp"
+#include "comminute/core/parallel.hpp"
+#include "comminute/engine/parallel_threshold.hpp"
 
 namespace comminute {
 
@@ -110,6 +112,7 @@ void PairTracker::rebuild(ParticleStore& p, const Walls& walls, SimulationOption
                           ContactStateStore& pair_state, ContactStateStore& wall_state,
                           const std::vector<std::uint64_t>* labels) {
   if (!labels) prepare(p, options);
+  flagged_valid_ = false;
   nlist_.build(p, options.skin, pair_state.active, labels);
   const auto& carried = nlist_.carried();
   // the last build's positions are spent: released before the carry, the peak memory of a rebuild
@@ -164,21 +167,52 @@ void PairTracker::build_wall_candidates(const ParticleStore& p, const Walls& wal
   std::vector<WallContactRecord> fresh;  // `candidate`: the old index whose state it continues
   wall_full_scan_.assign(walls.size(), 0);
   wall_travel_.assign(walls.size(), 0.0);
-  std::vector<WallContact> found;
-  std::vector<std::uint32_t> elements;
   wall_elements_.clear(walls.size());
+  // each thread searches a range of the particles (ghosts: their owners meet the walls) into a
+  // part of its own; the parts are joined in range order, as a serial search would list them
+  struct Part {
+    std::vector<WallContactRecord> found;
+    std::vector<std::uint32_t> elements;  // the particles' element lists, one after the other
+    std::vector<std::uint32_t> counts;    // per particle: how many
+    bool first_listed = false;            // the first particle's elements were listed
+  };
+  const std::size_t n = p.owned();
+  const int nt = n >= kParallelMin ? max_threads() : 1;
+  std::vector<Part> parts(static_cast<std::size_t>(nt));
   for (std::uint32_t w = 0; w < walls.size(); ++w) {
     wall_full_scan_[w] = walls[w]->full_scan();
-    for (std::uint32_t i = 0; i < p.owned(); ++i) {  // ghosts: their owners meet the walls
-      const std::size_t from = fresh.size();
-      const bool listed =
-          add_wall_candidates(p, walls, i, w, p.x[i], p.radius[i], skin, elements, found, fresh);
-      if (i == 0 && listed) wall_elements_.start(w);
-      if (wall_elements_.on(w)) wall_elements_.append(w, elements);
-      for (std::size_t k = from; k < fresh.size(); ++k) {
-        WallContactRecord& r = fresh[k];
-        auto it = std::lower_bound(old.begin(), old.end(), r, key_less);
-        if (it != old.end() && !key_less(r, *it)) r.candidate = it->candidate;
+#pragma omp parallel num_threads(nt)
+    {
+      const auto t = static_cast<std::size_t>(thread_id()), ut = static_cast<std::size_t>(nt);
+      Part& part = parts[t];
+      part.found.clear();
+      part.elements.clear();
+      part.counts.clear();
+      std::vector<WallContact> found;
+      std::vector<std::uint32_t> elements;
+      for (std::size_t s = n * t / ut; s < n * (t + 1) / ut; ++s) {
+        const auto i = static_cast<std::uint32_t>(s);
+        const std::size_t from = part.found.size();
+        const bool listed = add_wall_candidates(p, walls, i, w, p.x[i], p.radius[i], skin, elements,
+                                                found, part.found);
+        if (i == 0) part.first_listed = listed;
+        part.elements.insert(part.elements.end(), elements.begin(), elements.end());
+        part.counts.push_back(static_cast<std::uint32_t>(elements.size()));
+        for (std::size_t k = from; k < part.found.size(); ++k) {
+          WallContactRecord& r = part.found[k];
+          auto it = std::lower_bound(old.begin(), old.end(), r, key_less);
+          if (it != old.end() && !key_less(r, *it)) r.candidate = it->candidate;
+        }
+      }
+    }
+    if (n > 0 && parts[0].first_listed) wall_elements_.start(w);
+    for (const Part& part : parts) {
+      fresh.insert(fresh.end(), part.found.begin(), part.found.end());
+      if (!wall_elements_.on(w)) continue;
+      std::size_t at = 0;
+      for (const std::uint32_t c : part.counts) {
+        wall_elements_.append(w, std::span<const std::uint32_t>(part.elements.data() + at, c));
+        at += c;
       }
     }
   }
@@ -230,12 +264,23 @@ void PairTracker::wall_candidates_of_appended(const ParticleStore& p, const Wall
     }
 }
 
+const std::vector<std::uint32_t>& PairTracker::pairs_flagged(
+    const std::vector<std::uint8_t>& flags) {
+  if (!flagged_valid_ || flagged_by_ != flags) {
+    flagged_ = nlist_.pairs_flagged(flags);
+    flagged_by_ = flags;
+    flagged_valid_ = true;
+  }
+  return flagged_;
+}
+
 bool PairTracker::replace(const ParticleStore& p, const Walls& walls, double skin,
                           const std::vector<NewFragment>& fragments,
                           const std::vector<std::uint32_t>& renewed, ContactStateStore& pair_state,
                           ContactStateStore& wall_state) {
   if (stale_ || skin <= 0 || !nlist_.can_update_in_place()) return false;
   if (!renewed.empty()) return renew(p, walls, skin, fragments, renewed, pair_state, wall_state);
+  flagged_valid_ = false;
   const std::vector<std::uint32_t> to_new = nlist_.slots_after_removal(p);
   const std::size_t n_kept = static_cast<std::size_t>(std::count_if(
       to_new.begin(), to_new.end(), [](std::uint32_t s) { return s != NeighborList::none; }));
@@ -329,8 +374,11 @@ bool PairTracker::renew(const ParticleStore& p, const Walls& walls, double skin,
     reach_tracked_.push_back(s);
   }
   reach_of_appended(p, n_old, *final_radius, reach_tracked_);
+  // (the breakage module asked for the pairs of its parents, which are the renewed slots)
   const std::vector<std::uint32_t> fresh_pairs =
-      nlist_.renew_in_place(p, is_renewed, x_at_build_, r_at_build_);
+      flagged_valid_ && flagged_by_ == is_renewed ? flagged_ : nlist_.pairs_flagged(is_renewed);
+  nlist_.renew_in_place(p, x_at_build_, r_at_build_);
+  flagged_valid_ = false;
   pair_state.renew(fresh_pairs, nlist_.size());
   pause_pruning();  // (as after update_in_place)
   // wall candidates: those of a renewed slot are the new particle's, afresh; the appended
@@ -441,6 +489,7 @@ void PairTracker::load(const Archive& a, const ParticleStore& p, double skin,
   if (!std::isfinite(disp2) || disp2 < 0) corrupt("sim/max_disp2", "is not a finite distance");
   nlist_.restore(std::move(first), std::move(second), std::move(ids), std::move(large),
                  std::move(labels));
+  flagged_valid_ = false;
   x_at_build_ = std::move(x_build);
   r_at_build_ = std::move(r_build);
   reach_tracked_ = std::move(tracked);

@@ -88,6 +88,9 @@ class PairTracker {
   std::uint64_t prunes() const { return prunes_; }
   const NeighborList& pairs() const { return nlist_; }
   NeighborList& pairs() { return nlist_; }
+  // The pairs with a flagged slot (NeighborList::pairs_flagged). The answer is kept until the list
+  // changes: replace() with exactly these slots renewed takes it instead of scanning again.
+  const std::vector<std::uint32_t>& pairs_flagged(const std::vector<std::uint8_t>& flags);
   const std::vector<WallContactRecord>& wall_candidates() const { return wall_candidates_; }
   // Per wall and particle, the elements within the skin at the last candidate search.
   const WallElementLists& wall_elements() const { return wall_elements_; }
@@ -160,6 +163,10 @@ class PairTracker {
   std::uint64_t steps_since_prune_ = 0;
   bool prune_paused_ = false;
   std::uint64_t prunes_ = 0;
+  // the last pairs_flagged() answer and its flags, while the list is unchanged
+  std::vector<std::uint8_t> flagged_by_;
+  std::vector<std::uint32_t> flagged_;
+  bool flagged_valid_ = false;
 };
 
 }  // namespace comminute

@@ -106,7 +106,12 @@ class Simulation {
   double reach_margin(std::size_t i) const;
 
   const NeighborList& pairs() const { return tracker_.pairs(); }
-  NeighborList& pairs() { return tracker_.pairs(); }
+  // The pairs of pairs() with a flagged slot (one flag per slot of the list, ghosts included),
+  // ascending. Breakage asks for its parents' pairs; an in-place replacement that renews exactly
+  // those slots then reuses the answer.
+  const std::vector<std::uint32_t>& pairs_flagged(const std::vector<std::uint8_t>& flags) {
+    return tracker_.pairs_flagged(flags);
+  }
   // Per-pair state, indexed like pairs(); per wall-candidate state, indexed by
   // WallContactRecord::candidate.
   const ContactStateStore& pair_state() const { return pair_state_; }

@@ -379,31 +379,32 @@ void NeighborList::append_rows(std::size_t n_kept, std::size_t n, const std::vec
     }
 }
 
-std::vector<std::uint32_t> NeighborList::renew_in_place(const ParticleStore& p,
-                                                        const std::vector<std::uint8_t>& renewed,
-                                                        const std::vector<Vec3>& x_build,
-                                                        const std::vector<double>& r_build) {
-  const std::size_t n_old = ids_.size(), n = p.size(), m_old = first.size();
-  // the pairs of the renewed slots (found on all threads, in pair order): a fragment in its
-  // parent's slot keeps the parent's pairs, which cover it (it lies inside the parent's reach
-  // sphere), but none of the parent's contacts
-  const auto touches = [&](std::size_t k) { return (renewed[first[k]] | renewed[second[k]]) != 0; };
-  const int nt = m_old >= kThreadedLoop ? max_threads() : 1;
+std::vector<std::uint32_t> NeighborList::pairs_flagged(
+    const std::vector<std::uint8_t>& flagged) const {
+  const std::size_t m = first.size();
+  const auto touches = [&](std::size_t k) { return (flagged[first[k]] | flagged[second[k]]) != 0; };
+  const int nt = m >= kThreadedLoop ? max_threads() : 1;
   std::vector<std::vector<std::uint32_t>> found(static_cast<std::size_t>(nt));
 #pragma omp parallel num_threads(nt)
   {
     const auto t = static_cast<std::size_t>(thread_id()), ut = static_cast<std::size_t>(nt);
-    for (std::size_t k = m_old * t / ut; k < m_old * (t + 1) / ut; ++k)
+    for (std::size_t k = m * t / ut; k < m * (t + 1) / ut; ++k)
       if (touches(k)) found[t].push_back(static_cast<std::uint32_t>(k));
   }
-  std::vector<std::uint32_t> fresh;
-  for (const auto& f : found) fresh.insert(fresh.end(), f.begin(), f.end());
+  for (std::size_t t = 1; t < found.size(); ++t)
+    found[0].insert(found[0].end(), found[t].begin(), found[t].end());
+  return std::move(found[0]);
+}
+
+void NeighborList::renew_in_place(const ParticleStore& p, const std::vector<Vec3>& x_build,
+                                  const std::vector<double>& r_build) {
+  const std::size_t n_old = ids_.size(), n = p.size(), m_old = first.size();
   append_rows(n_old, n, x_build, r_build);
   large_.resize(n, 0);
-  ids_.resize(n);
-  for (std::size_t s = 0; s < n_old; ++s)
-    if (renewed[s]) ids_[s] = p.id[s];
-  for (std::size_t s = n_old; s < n; ++s) ids_[s] = p.id[s];
+  ids_.resize(
+      n);  // ids_ = p.id (the renewed slots' and the appended ones' are new), on all threads
+#pragma omp parallel for schedule(static) if (n >= kThreadedLoop)
+  for (std::size_t s = 0; s < n; ++s) ids_[s] = p.id[s];
   // the rows of the kept owners are unchanged; the appended owners' rows follow
   row_.resize(n + 1);
   std::size_t k = m_old;
@@ -412,7 +413,6 @@ std::vector<std::uint32_t> NeighborList::renew_in_place(const ParticleStore& p,
     row_[i] = static_cast<std::uint32_t>(k);
   }
   kept_from_.clear();
-  return fresh;
 }
 
 void NeighborList::rebuild_index(const std::vector<Vec3>& x_build,

@@ -57,16 +57,17 @@ class NeighborList {
   void update_in_place(const ParticleStore& p, const std::vector<std::uint32_t>& to_new,
                        const std::vector<Vec3>& x_build, const std::vector<double>& r_build);
   const std::vector<std::uint32_t>& kept_from() const { return kept_from_; }
+  // The pairs with a flagged slot (flagged[s] != 0, one flag per slot of the list), ascending;
+  // found on all threads.
+  std::vector<std::uint32_t> pairs_flagged(const std::vector<std::uint8_t>& flagged) const;
   // In-place update after particles were renewed in their slots (ParticleStore::renew: a fragment
-  // in its parent's slot; renewed[s] = 1 for such a slot s of the list) and new ones appended,
-  // nothing removed: every pair is kept where it is, and the appended particles get their rows as
-  // in update_in_place(). A renewed slot keeps its reach sphere at build (x_build, r_build hold
-  // the parent's): its new particle must lie inside it. Returns the pairs of the renewed slots,
-  // ascending (their contact state must start afresh); kept_from() is empty after it.
-  std::vector<std::uint32_t> renew_in_place(const ParticleStore& p,
-                                            const std::vector<std::uint8_t>& renewed,
-                                            const std::vector<Vec3>& x_build,
-                                            const std::vector<double>& r_build);
+  // in its parent's slot) and new ones appended, nothing removed: every pair is kept where it is,
+  // and the appended particles get their rows as in update_in_place(). A renewed slot's reach
+  // sphere (x_build, r_build) must lie inside the one it had at the build (the index keeps that
+  // one); the pairs of the renewed slots (pairs_flagged) keep their places but not their contact
+  // state. kept_from() is empty after it.
+  void renew_in_place(const ParticleStore& p, const std::vector<Vec3>& x_build,
+                      const std::vector<double>& r_build);
   bool can_update_in_place() const { return index_.valid(); }
   // Re-creates the spatial index of the reach spheres after restore() (checkpoints).
   void rebuild_index(const std::vector<Vec3>& x_build, const std::vector<double>& r_build,

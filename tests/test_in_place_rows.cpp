@@ -34,15 +34,27 @@ ParticleStore bed(Rng& rng, int n, double box) {
   return p;
 }
 
+constexpr double skin = 0.0002, box = 0.04;
+
+// A bed of n spheres and its list, built with `threads` threads (left set: the caller restores
+// `saved`); `rng` goes on drawing the changes.
+struct Built {
+  Rng rng;
+  ParticleStore p;
+  NeighborList nl;
+  int saved;
+};
+Built built_bed(std::uint64_t seed, int n, int threads) {
+  Built b{Rng(seed), {}, {}, omp_get_max_threads()};
+  b.p = bed(b.rng, n, box);
+  omp_set_num_threads(threads);
+  b.nl.build(b.p, skin);
+  return b;
+}
+
 // Two rounds of removal and insertion with `threads` threads; the lists after each round.
 std::vector<Lists> updated(int threads, std::vector<Lists>* expected) {
-  const double skin = 0.0002, box = 0.04;
-  Rng rng(17);
-  ParticleStore p = bed(rng, 4000, box);
-  NeighborList nl;
-  const int saved = omp_get_max_threads();
-  omp_set_num_threads(threads);
-  nl.build(p, skin);
+  auto [rng, p, nl, saved] = built_bed(17, 4000, threads);
   std::vector<Lists> out;
   for (int round = 0; round < 2; ++round) {
     for (std::size_t i = 0; i < p.size(); ++i)
@@ -119,13 +131,7 @@ struct Renewal {
 // The reach spheres passed are the build's, but the renewed slots' are the spheres about their new
 // centres inside the old ones (as PairTracker::replace gives them).
 Renewal renewed(int threads, Renewal* expected) {
-  const double skin = 0.0002, box = 0.04;
-  Rng rng(23);
-  ParticleStore p = bed(rng, 16000, box);
-  NeighborList nl;
-  const int saved = omp_get_max_threads();
-  omp_set_num_threads(threads);
-  nl.build(p, skin);
+  auto [rng, p, nl, saved] = built_bed(23, 16000, threads);
   std::vector<Vec3> x_build = p.x;
   std::vector<double> r_build = p.radius;
   const std::size_t n_old = p.size();

@@ -9,10 +9,6 @@
 #include <numbers>
 #include <random>
 
-#include <omp.h>
-
-#include "comminute/engine/pair_tracker.hpp"
-#include "comminute/geometry/plane_wall.hpp"
 #include "mesh_fixture.hpp"
 
 using namespace comminute;
@@ -156,63 +152,4 @@ TEST(MeshElementLists, TravelBoundsEveryVertexDisplacementOfAStep) {
       }
     }
   }
-}
-
-// The wall candidates and the mesh's element lists of a neighbour-list build are searched on all
-// threads, each over a range of the particles, and joined in range order: they must be those of
-// one thread, record for record and list for list (a list joined out of order would hand a
-// particle another's triangles). 6000 spheres (threaded: 4096 or more) above a tiled mesh floor
-// and beside a plane.
-TEST(MeshElementLists, CandidatesOfABuildOnTwoThreadsAreThoseOfOne) {
-  const double r = 0.001, skin = 0.0004, side = 0.2;
-  ParticleStore p;
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> u(0, 1);
-  for (int k = 0; k < 6000; ++k) {
-    ParticleInit init;
-    init.radius = r * (0.5 + 0.5 * u(rng));
-    init.x = {side * u(rng), side * u(rng), 3 * r * u(rng)};  // many within reach of the floor
-    init.density = 2500;
-    p.add(init);
-  }
-  PairTracker::Walls walls;
-  walls.push_back(mesh_wall(tiled_square(40, side / 40)));
-  walls.push_back(std::make_unique<PlaneWall>(Vec3{0, 0, 0}, Vec3{1, 0, 0}));
-  struct Built {
-    std::vector<WallContactRecord> candidates;
-    std::vector<std::vector<std::uint32_t>> lists;  // the floor's, per particle
-  };
-  auto build = [&](int threads) {
-    const int saved = omp_get_max_threads();
-    omp_set_num_threads(threads);
-    PairTracker tracker;
-    SimulationOptions options;
-    options.skin = skin;
-    options.sort_every = 0;
-    ContactStateStore pair_state, wall_state;
-    EXPECT_TRUE(tracker.update(p, walls, options, pair_state, wall_state));
-    omp_set_num_threads(saved);
-    Built b{tracker.wall_candidates(), {}};
-    for (std::uint32_t i = 0; i < p.size(); ++i) {
-      const auto list = tracker.wall_elements().find(0, i);
-      EXPECT_TRUE(list.has_value());
-      if (list) b.lists.emplace_back(list->begin(), list->end());
-    }
-    return b;
-  };
-  const Built one = build(1), two = build(2);
-  std::size_t on_floor = 0, listed = 0;
-  for (const auto& c : one.candidates) on_floor += c.wall == 0 ? 1 : 0;
-  for (const auto& l : one.lists) listed += l.empty() ? 0 : 1;
-  EXPECT_GT(on_floor, 1000u);  // a real search: many candidates and lists on both walls
-  EXPECT_GT(one.candidates.size(), on_floor + 10);
-  EXPECT_GT(listed, 1000u);
-  ASSERT_EQ(one.candidates.size(), two.candidates.size());
-  for (std::size_t q = 0; q < one.candidates.size(); ++q) {
-    const WallContactRecord &a = one.candidates[q], &b = two.candidates[q];
-    EXPECT_TRUE(a.particle == b.particle && a.wall == b.wall && a.feature == b.feature &&
-                a.id == b.id)
-        << "candidate " << q;
-  }
-  EXPECT_EQ(one.lists, two.lists);
 }

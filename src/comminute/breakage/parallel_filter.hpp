@@ -1,11 +1,11 @@
 #pragma once
-// The indices k in [0, n) for which keep(k) holds, in ascending order, found by the threads in
-// contiguous ranges and concatenated in range order: the same list as a serial scan, for any
-// thread count. For the breakage module's scans of the whole pair list or particle store, which
-// find few hits (the pairs and slots of this step's broken parents). Small scans run serially.
+// The breakage module's scans of the whole pair list or particle store: comminute::parallel_filter
+// (core/parallel.hpp) for those with few hits (the slots of this step's broken parents), threaded
+// from the engine's size; parallel_select for those with many.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "comminute/core/parallel.hpp"
@@ -15,19 +15,7 @@ namespace comminute::breakage {
 
 template <class Keep>
 std::vector<std::uint32_t> parallel_filter(std::size_t n, Keep&& keep) {
-  const int nt = n >= 2 * kParallelMin ? max_threads() : 1;
-  std::vector<std::vector<std::uint32_t>> found(static_cast<std::size_t>(nt));
-#pragma omp parallel num_threads(nt)
-  {
-    const auto t = static_cast<std::size_t>(thread_id());
-    const std::size_t k0 = n * t / static_cast<std::size_t>(nt),
-                      k1 = n * (t + 1) / static_cast<std::size_t>(nt);
-    for (std::size_t k = k0; k < k1; ++k)
-      if (keep(k)) found[t].push_back(static_cast<std::uint32_t>(k));
-  }
-  for (std::size_t t = 1; t < found.size(); ++t)
-    found[0].insert(found[0].end(), found[t].begin(), found[t].end());
-  return std::move(found[0]);
+  return comminute::parallel_filter(n, std::forward<Keep>(keep), 2 * kParallelMin);
 }
 
 // The same list, into `out`, for scans where many indices qualify in no predictable pattern (the

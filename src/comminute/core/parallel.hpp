@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <exception>
 #include <vector>
 #if defined(__SSE__)
@@ -69,6 +70,26 @@ void parallel_scatter(std::size_t n, std::vector<T>& out, const T& identity, Bod
 #pragma omp parallel for schedule(static) num_threads(nt) if (m >= 4096)
   for (std::size_t i = 0; i < m; ++i)
     for (const auto& c : copies) out[i] = combine(out[i], c[i]);
+}
+
+// The indices k in [0, n) for which keep(k) holds, ascending, found by the threads in contiguous
+// ranges and joined in range order: the same list as a serial scan, for any thread count. For
+// scans with few hits; serial below `threaded_from` indices.
+template <class Keep>
+std::vector<std::uint32_t> parallel_filter(std::size_t n, Keep&& keep, std::size_t threaded_from) {
+  const int nt = n >= threaded_from ? max_threads() : 1;
+  std::vector<std::vector<std::uint32_t>> found(static_cast<std::size_t>(nt));
+#pragma omp parallel num_threads(nt)
+  {
+    const auto t = static_cast<std::size_t>(thread_id());
+    const std::size_t k0 = n * t / static_cast<std::size_t>(nt),
+                      k1 = n * (t + 1) / static_cast<std::size_t>(nt);
+    for (std::size_t k = k0; k < k1; ++k)
+      if (keep(k)) found[t].push_back(static_cast<std::uint32_t>(k));
+  }
+  for (std::size_t t = 1; t < found.size(); ++t)
+    found[0].insert(found[0].end(), found[t].begin(), found[t].end());
+  return std::move(found[0]);
 }
 
 // body(k) for every k in [0, n), handed out one at a time to the threads as they come free: for

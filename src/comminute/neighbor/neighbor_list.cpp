@@ -344,10 +344,15 @@ void NeighborList::update_in_place(const ParticleStore& p, const std::vector<std
     if (to_new[static_cast<std::size_t>(old)] != none)
       large[to_new[static_cast<std::size_t>(old)]] = large_[static_cast<std::size_t>(old)];
   large_ = std::move(large);
+  follow_ids(p);
+  make_rows(n);
+}
+
+void NeighborList::follow_ids(const ParticleStore& p) {
+  const std::size_t n = p.size();
   ids_.resize(n);  // ids_ = p.id, on all threads
 #pragma omp parallel for schedule(static) if (n >= kThreadedLoop)
   for (std::size_t s = 0; s < n; ++s) ids_[s] = p.id[s];
-  make_rows(n);
 }
 
 void NeighborList::append_rows(std::size_t n_kept, std::size_t n, const std::vector<Vec3>& x_build,
@@ -381,19 +386,9 @@ void NeighborList::append_rows(std::size_t n_kept, std::size_t n, const std::vec
 
 std::vector<std::uint32_t> NeighborList::pairs_flagged(
     const std::vector<std::uint8_t>& flagged) const {
-  const std::size_t m = first.size();
-  const auto touches = [&](std::size_t k) { return (flagged[first[k]] | flagged[second[k]]) != 0; };
-  const int nt = m >= kThreadedLoop ? max_threads() : 1;
-  std::vector<std::vector<std::uint32_t>> found(static_cast<std::size_t>(nt));
-#pragma omp parallel num_threads(nt)
-  {
-    const auto t = static_cast<std::size_t>(thread_id()), ut = static_cast<std::size_t>(nt);
-    for (std::size_t k = m * t / ut; k < m * (t + 1) / ut; ++k)
-      if (touches(k)) found[t].push_back(static_cast<std::uint32_t>(k));
-  }
-  for (std::size_t t = 1; t < found.size(); ++t)
-    found[0].insert(found[0].end(), found[t].begin(), found[t].end());
-  return std::move(found[0]);
+  return parallel_filter(
+      first.size(), [&](std::size_t k) { return (flagged[first[k]] | flagged[second[k]]) != 0; },
+      kThreadedLoop);
 }
 
 void NeighborList::renew_in_place(const ParticleStore& p, const std::vector<Vec3>& x_build,
@@ -401,10 +396,7 @@ void NeighborList::renew_in_place(const ParticleStore& p, const std::vector<Vec3
   const std::size_t n_old = ids_.size(), n = p.size(), m_old = first.size();
   append_rows(n_old, n, x_build, r_build);
   large_.resize(n, 0);
-  ids_.resize(
-      n);  // ids_ = p.id (the renewed slots' and the appended ones' are new), on all threads
-#pragma omp parallel for schedule(static) if (n >= kThreadedLoop)
-  for (std::size_t s = 0; s < n; ++s) ids_[s] = p.id[s];
+  follow_ids(p);  // (the renewed slots' ids and the appended ones' are new)
   // the rows of the kept owners are unchanged; the appended owners' rows follow
   row_.resize(n + 1);
   std::size_t k = m_old;

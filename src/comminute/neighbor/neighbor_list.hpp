@@ -95,6 +95,8 @@ class NeighborList {
   double skin_ = 0;                       // m, of the last build
   Carry carry_;                           // of the last build
   std::vector<std::uint32_t> kept_from_;  // of the last in-place update
+  // ids_ = p.id after an in-place update.
+  void follow_ids(const ParticleStore& p);
   // Rows of the appended particles n_kept .. n - 1 (update_in_place, renew_in_place).
   void append_rows(std::size_t n_kept, std::size_t n, const std::vector<Vec3>& x_build,
                    const std::vector<double>& r_build);

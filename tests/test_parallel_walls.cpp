@@ -98,9 +98,9 @@ TEST(ParallelWalls, CandidatesOfABuildOnTwoThreadsAreThoseOfOne) {
     ContactStateStore pair_state, wall_state;
     EXPECT_TRUE(tracker.update(p, walls, options, pair_state, wall_state));
     omp_set_num_threads(saved);
-    Built b{tracker.wall_candidates(), {}};
+    Built b{tracker.wall_candidates().records(), {}};
     for (std::uint32_t i = 0; i < p.size(); ++i) {
-      const auto list = tracker.wall_elements().find(0, i);
+      const auto list = tracker.wall_candidates().elements().find(0, i);
       EXPECT_TRUE(list.has_value());
       if (list) b.lists.emplace_back(list->begin(), list->end());
     }

@@ -3,14 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <tuple>
 #include <unordered_map>
 
 #include <fmt/format.h>
 
 #include "comminute/core/error.hpp"
-#include "comminute/core/parallel.hpp"
-#include "comminute/engine/parallel_threshold.hpp"
 
 namespace comminute {
 
@@ -35,8 +32,7 @@ bool PairTracker::update(ParticleStore& p, const Walls& walls, SimulationOptions
 
 bool PairTracker::due(const ParticleStore& p, const SimulationOptions& options) {
   if (!stale_) {
-    double travel = 0;
-    for (double t : wall_travel_) travel = std::max(travel, t);
+    const double travel = walls_.largest_travel();
     // |x - x_build| for every particle; plus the change of radius for the tracked ones
     // (a max: exact, so the same on any number of threads)
     double reach = std::sqrt(max_disp2_);
@@ -125,106 +121,11 @@ void PairTracker::rebuild(ParticleStore& p, const Walls& walls, SimulationOption
   reach_tracked_.clear();
   for (std::size_t i = 0; i < p.owned(); ++i)
     if (p.flags[i] & pflag::growing) reach_tracked_.push_back(static_cast<std::uint32_t>(i));
-  build_wall_candidates(p, walls, options.skin, wall_state);
+  walls_.build(p, walls, options.skin, wall_state);
   stale_ = false;
   near_valid_ = false;
   prune_paused_ = false;
   ++rebuilds_;
-}
-
-bool PairTracker::add_wall_candidates(const ParticleStore& p, const Walls& walls, std::uint32_t i,
-                                      std::uint32_t w, const Vec3& x, double r, double skin,
-                                      std::vector<std::uint32_t>& elements,
-                                      std::vector<WallContact>& found,
-                                      std::vector<WallContactRecord>& into) const {
-  found.clear();
-  elements.clear();
-  // a wall with elements lists those within the skin (kept for the force loop's look-ups) and
-  // finds the candidate features among them
-  const bool listed = walls[w]->near_elements(x, r, skin, elements);
-  const bool near = (listed ? walls[w]->contacts_among(x, r, skin, elements, found)
-                            : walls[w]->contacts(x, r, skin, found)) > 0;
-  if (!near && !wall_full_scan_[w]) return listed;
-  // one candidate per (particle, wall, feature); a full-scan wall keeps one per particle
-  if (found.empty()) found.push_back({{}, {}, -1, 0});
-  for (const auto& c : found) into.push_back({i, w, c.feature, NeighborList::none, p.id[i]});
-  return listed;
-}
-
-void PairTracker::build_wall_candidates(const ParticleStore& p, const Walls& walls, double skin,
-                                        ContactStateStore& wall_state) {
-  // the touching wall contacts, by (id, wall, feature), with their index in the old list
-  std::vector<WallContactRecord> old;
-  for (std::size_t q = 0; q < wall_candidates_.size(); ++q)
-    if (wall_state.active[q]) {
-      old.push_back(wall_candidates_[q]);
-      old.back().candidate = static_cast<std::uint32_t>(q);
-    }
-  auto key_less = [](const WallContactRecord& a, const WallContactRecord& b) {
-    return std::tie(a.id, a.wall, a.feature) < std::tie(b.id, b.wall, b.feature);
-  };
-  std::sort(old.begin(), old.end(), key_less);
-  std::vector<WallContactRecord> fresh;  // `candidate`: the old index whose state it continues
-  wall_full_scan_.assign(walls.size(), 0);
-  wall_travel_.assign(walls.size(), 0.0);
-  wall_elements_.clear(walls.size());
-  // each thread searches a range of the particles (ghosts: their owners meet the walls) into a
-  // part of its own; the parts are joined in range order, as a serial search would list them
-  struct Part {
-    std::vector<WallContactRecord> found;
-    std::vector<std::uint32_t> elements;  // the particles' element lists, one after the other
-    std::vector<std::uint32_t> counts;    // per particle: how many
-    bool first_listed = false;            // the first particle's elements were listed
-  };
-  const std::size_t n = p.owned();
-  const int nt = n >= kParallelMin ? max_threads() : 1;
-  std::vector<Part> parts(static_cast<std::size_t>(nt));
-  for (std::uint32_t w = 0; w < walls.size(); ++w) {
-    wall_full_scan_[w] = walls[w]->full_scan();
-#pragma omp parallel num_threads(nt)
-    {
-      const auto t = static_cast<std::size_t>(thread_id()), ut = static_cast<std::size_t>(nt);
-      Part& part = parts[t];
-      part.found.clear();
-      part.elements.clear();
-      part.counts.clear();
-      std::vector<WallContact> found;
-      std::vector<std::uint32_t> elements;
-      for (std::size_t s = n * t / ut; s < n * (t + 1) / ut; ++s) {
-        const auto i = static_cast<std::uint32_t>(s);
-        const std::size_t from = part.found.size();
-        const bool listed = add_wall_candidates(p, walls, i, w, p.x[i], p.radius[i], skin, elements,
-                                                found, part.found);
-        if (i == 0) part.first_listed = listed;
-        part.elements.insert(part.elements.end(), elements.begin(), elements.end());
-        part.counts.push_back(static_cast<std::uint32_t>(elements.size()));
-        for (std::size_t k = from; k < part.found.size(); ++k) {
-          WallContactRecord& r = part.found[k];
-          auto it = std::lower_bound(old.begin(), old.end(), r, key_less);
-          if (it != old.end() && !key_less(r, *it)) r.candidate = it->candidate;
-        }
-      }
-    }
-    if (n > 0 && parts[0].first_listed) wall_elements_.start(w);
-    for (const Part& part : parts) {
-      fresh.insert(fresh.end(), part.found.begin(), part.found.end());
-      if (!wall_elements_.on(w)) continue;
-      std::size_t at = 0;
-      for (const std::uint32_t c : part.counts) {
-        wall_elements_.append(w, std::span<const std::uint32_t>(part.elements.data() + at, c));
-        at += c;
-      }
-    }
-  }
-  // by particle (then wall, feature): lets the force loop split the list between threads
-  std::stable_sort(fresh.begin(), fresh.end(),
-                   [](const WallContactRecord& a, const WallContactRecord& b) {
-                     return a.particle < b.particle;
-                   });
-  std::vector<std::uint32_t> state_from(fresh.size());
-  for (std::size_t q = 0; q < fresh.size(); ++q) state_from[q] = fresh[q].candidate;
-  wall_state.gather(state_from);
-  wall_candidates_.swap(fresh);
 }
 
 std::optional<std::unordered_map<std::uint64_t, double>> PairTracker::final_radii(
@@ -248,20 +149,6 @@ void PairTracker::reach_of_appended(const ParticleStore& p, std::size_t n_kept,
     r_at_build_[s] = std::max(p.radius[s], final_radius.at(p.id[s]));
     tracked.push_back(static_cast<std::uint32_t>(s));
   }
-}
-
-void PairTracker::wall_candidates_of_appended(const ParticleStore& p, const Walls& walls,
-                                              double skin, std::size_t n_kept,
-                                              WallElementLists& lists,
-                                              std::vector<WallContactRecord>& into) const {
-  std::vector<WallContact> found;
-  std::vector<std::uint32_t> elements;
-  for (std::size_t s = n_kept; s < p.size(); ++s)
-    for (std::uint32_t w = 0; w < walls.size(); ++w) {
-      add_wall_candidates(p, walls, static_cast<std::uint32_t>(s), w, x_at_build_[s],
-                          r_at_build_[s], skin, elements, found, into);
-      if (lists.on(w)) lists.append(w, elements);
-    }
 }
 
 const std::vector<std::uint32_t>& PairTracker::pairs_flagged(
@@ -318,23 +205,8 @@ bool PairTracker::replace(const ParticleStore& p, const Walls& walls, double ski
   pause_pruning();
   pair_state.gather(nlist_.kept_from());
   // wall candidates: kept ones remapped, each fragment's found at its reach sphere
-  std::vector<WallContactRecord> kept;
-  std::vector<std::uint32_t> state_from;
-  for (std::size_t q = 0; q < wall_candidates_.size(); ++q) {
-    const WallContactRecord& c = wall_candidates_[q];
-    const std::uint32_t s = c.particle < to_new.size() ? to_new[c.particle] : NeighborList::none;
-    if (s == NeighborList::none) continue;
-    WallContactRecord r = c;
-    r.particle = s;
-    kept.push_back(r);
-    state_from.push_back(static_cast<std::uint32_t>(q));
-  }
-  WallElementLists lists = wall_elements_.remapped(to_new, n_kept, NeighborList::none);
-  wall_candidates_of_appended(p, walls, skin, n_kept, lists, kept);
-  wall_elements_ = std::move(lists);
-  state_from.resize(kept.size(), NeighborList::none);
-  wall_candidates_.swap(kept);
-  wall_state.gather(state_from);
+  walls_.remap(p, walls, skin, to_new, n_kept, NeighborList::none, x_at_build_, r_at_build_,
+               wall_state);
   return true;
 }
 
@@ -383,16 +255,7 @@ bool PairTracker::renew(const ParticleStore& p, const Walls& walls, double skin,
   pause_pruning();  // (as after update_in_place)
   // wall candidates: those of a renewed slot are the new particle's, afresh; the appended
   // fragments' found at their reach spheres
-  std::vector<std::uint32_t> fresh;
-  for (std::size_t q = 0; q < wall_candidates_.size(); ++q) {
-    WallContactRecord& c = wall_candidates_[q];
-    if (c.particle < n_old && is_renewed[c.particle]) {
-      c.id = p.id[c.particle];
-      fresh.push_back(static_cast<std::uint32_t>(q));
-    }
-  }
-  wall_candidates_of_appended(p, walls, skin, n_old, wall_elements_, wall_candidates_);
-  wall_state.renew(fresh, wall_candidates_.size());
+  walls_.renew(p, walls, skin, is_renewed, n_old, x_at_build_, r_at_build_, wall_state);
   return true;
 }
 
@@ -414,9 +277,7 @@ void PairTracker::save(Archive& a) const {
   a.put("pairs/x_at_build", x_at_build_);
   a.put("pairs/r_at_build", r_at_build_);
   a.put("pairs/reach_tracked", reach_tracked_);
-  a.put("walls/candidates", wall_candidates_);
-  a.put("walls/travel", wall_travel_);
-  a.put("walls/full_scan", wall_full_scan_);
+  walls_.save(a);
   a.put_value("sim/rebuilds", rebuilds_);
   a.put_value("sim/appended_since_sort", appended_since_sort_);
   a.put_value("sim/max_disp2", max_disp2_);
@@ -444,9 +305,6 @@ void PairTracker::load(const Archive& a, const ParticleStore& p, double skin,
   auto x_build = a.get<Vec3>("pairs/x_at_build");
   auto r_build = a.get<double>("pairs/r_at_build");
   auto tracked = a.get<std::uint32_t>("pairs/reach_tracked");
-  auto candidates = a.get<WallContactRecord>("walls/candidates");
-  auto travel = a.get<double>("walls/travel");
-  auto full_scan = a.get<std::uint8_t>("walls/full_scan");
   const bool stale = a.get_value<std::uint8_t>("sim/need_rebuild") != 0;
   const std::size_t n_build = ids.size();
   if (!stale && n_build != p.size() + n_ghosts)
@@ -472,21 +330,9 @@ void PairTracker::load(const Archive& a, const ParticleStore& p, double skin,
   }
   for (std::uint32_t s : tracked)
     if (s >= n_build) corrupt("pairs/reach_tracked", fmt::format("slot {} is out of range", s));
-  const std::size_t n_walls = travel.size();
-  if (full_scan.size() != n_walls)
-    corrupt("walls/full_scan",
-            fmt::format("holds {} walls, 'walls/travel' {}", full_scan.size(), n_walls));
-  for (std::size_t k = 0; k < candidates.size(); ++k) {
-    const auto& c = candidates[k];
-    // (`candidate` is only meaningful during a build: it is not read from a checkpoint)
-    if (c.particle >= n_build || c.wall >= n_walls)
-      corrupt("walls/candidates", fmt::format("candidate {} (particle {}, wall {}) is out of range",
-                                              k, c.particle, c.wall));
-  }
-  for (double d : travel)
-    if (!std::isfinite(d)) corrupt("walls/travel", "is not finite");
   const double disp2 = a.get_value<double>("sim/max_disp2");
   if (!std::isfinite(disp2) || disp2 < 0) corrupt("sim/max_disp2", "is not a finite distance");
+  walls_.load(a, n_build);  // (checks its entries before it changes anything)
   nlist_.restore(std::move(first), std::move(second), std::move(ids), std::move(large),
                  std::move(labels));
   flagged_valid_ = false;
@@ -494,10 +340,6 @@ void PairTracker::load(const Archive& a, const ParticleStore& p, double skin,
   r_at_build_ = std::move(r_build);
   reach_tracked_ = std::move(tracked);
   if (x_at_build_.size() == p.size()) nlist_.rebuild_index(x_at_build_, r_at_build_, skin);
-  wall_candidates_ = std::move(candidates);
-  wall_elements_.clear(n_walls);
-  wall_travel_ = std::move(travel);
-  wall_full_scan_ = std::move(full_scan);
   rebuilds_ = a.get_value<std::uint64_t>("sim/rebuilds");
   // (absent in checkpoints written before the rule existed: their runs had not counted)
   appended_since_sort_ =

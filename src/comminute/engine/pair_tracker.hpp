@@ -3,7 +3,8 @@
 // what they were built from (each particle's reach sphere: its position and radius at the build),
 // when they must be rebuilt (a particle moved or grew by more than skin/2, a wall travelled as
 // much, or particles were inserted or removed), and their in-place update when breakage replaces
-// parents by fragments. It carries the engine's contact state through both.
+// parents by fragments. It carries the engine's contact state through both. The wall candidates
+// are a WallCandidates of their own, which it searches at each build and update.
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -12,8 +13,7 @@
 
 #include "comminute/contact/contact_state.hpp"
 #include "comminute/core/archive.hpp"
-#include "comminute/engine/wall_contact.hpp"
-#include "comminute/engine/wall_element_lists.hpp"
+#include "comminute/engine/wall_candidates.hpp"
 #include "comminute/geometry/wall.hpp"
 #include "comminute/neighbor/neighbor_list.hpp"
 #include "comminute/neighbor/pruned_pairs.hpp"
@@ -47,7 +47,7 @@ class PairTracker {
   // After a drift: the largest squared displacement since the build and the largest squared
   // displacement of this drift (m2), and the distance wall k moved this step (m).
   void moved(double max_displacement2, double step2);
-  void wall_moved(std::size_t k, double distance) { wall_travel_[k] += distance; }
+  void wall_moved(std::size_t k, double distance) { walls_.moved(k, distance); }
   // Whether the lists must be rebuilt before the next force computation: they are stale or some
   // reach changed by more than skin/2 (marks them stale).
   bool due(const ParticleStore& p, const SimulationOptions& options);
@@ -91,16 +91,9 @@ class PairTracker {
   // The pairs with a flagged slot (NeighborList::pairs_flagged). The answer is kept until the list
   // changes: replace() with exactly these slots renewed takes it instead of scanning again.
   const std::vector<std::uint32_t>& pairs_flagged(const std::vector<std::uint8_t>& flags);
-  const std::vector<WallContactRecord>& wall_candidates() const { return wall_candidates_; }
-  // Per wall and particle, the elements within the skin at the last candidate search.
-  const WallElementLists& wall_elements() const { return wall_elements_; }
-  // Before a rebuild: calls f(record, index) on each touching wall contact, which may change its
-  // feature key (periodic wraps); the rebuild then carries the contact under its new key.
-  template <class F>
-  void rekey_wall_contacts(const ContactStateStore& wall_state, F f) {
-    for (std::size_t q = 0; q < wall_candidates_.size(); ++q)
-      if (wall_state.active[q]) f(wall_candidates_[q], q);
-  }
+  // The particle–wall candidates, searched at each build and in-place update.
+  const WallCandidates& wall_candidates() const { return walls_; }
+  WallCandidates& wall_candidates() { return walls_; }
   std::uint64_t rebuilds() const { return rebuilds_; }
 
   void save(Archive& a) const;
@@ -112,14 +105,6 @@ class PairTracker {
   void rebuild(ParticleStore& p, const Walls& walls, SimulationOptions& options,
                ContactStateStore& pair_state, ContactStateStore& wall_state,
                const std::vector<std::uint64_t>* labels);
-  void build_wall_candidates(const ParticleStore& p, const Walls& walls, double skin,
-                             ContactStateStore& wall_state);
-  // Appends particle i's candidates on wall w; true when the wall listed its elements within the
-  // skin in `elements`.
-  bool add_wall_candidates(const ParticleStore& p, const Walls& walls, std::uint32_t i,
-                           std::uint32_t w, const Vec3& x, double r, double skin,
-                           std::vector<std::uint32_t>& elements, std::vector<WallContact>& found,
-                           std::vector<WallContactRecord>& into) const;
   double reach_change(const ParticleStore& p, std::size_t i) const;  // |x - x_b| + r - r_b
   // replace() with fragments in their parents' slots.
   bool renew(const ParticleStore& p, const Walls& walls, double skin,
@@ -132,17 +117,10 @@ class PairTracker {
   void reach_of_appended(const ParticleStore& p, std::size_t n_kept,
                          const std::unordered_map<std::uint64_t, double>& final_radius,
                          std::vector<std::uint32_t>& tracked);
-  // Candidates (and element lists) of the fragments appended from slot n_kept on.
-  void wall_candidates_of_appended(const ParticleStore& p, const Walls& walls, double skin,
-                                   std::size_t n_kept, WallElementLists& lists,
-                                   std::vector<WallContactRecord>& into) const;
   void pause_pruning();  // the whole list is visited until the next rebuild
 
   NeighborList nlist_;
-  std::vector<WallContactRecord> wall_candidates_;  // near walls at the last build
-  WallElementLists wall_elements_;  // (not checkpointed: the look-ups search until the next build)
-  std::vector<std::uint8_t> wall_full_scan_;  // per wall: surface moves, check every step
-  std::vector<double> wall_travel_;           // per wall: distance moved since the build
+  WallCandidates walls_;
   // Reach at the last build: a particle's pairs cover every sphere within skin of the sphere
   // (x_at_build_, r_at_build_); fragments appended in place get theirs at insertion.
   std::vector<Vec3> x_at_build_;

@@ -119,7 +119,7 @@ void Simulation::rekey_wrapped_wall_contacts() {
   // spring turns with it (sector) and a wall standing for its images re-keys the feature
   const auto& moved = ghosts_.wrapped();
   if (moved.empty()) return;
-  tracker_.rekey_wall_contacts(wall_state_, [&](WallContactRecord& c, std::size_t q) {
+  tracker_.wall_candidates().rekey(wall_state_, [&](WallContactRecord& c, std::size_t q) {
     const auto it = std::lower_bound(
         moved.begin(), moved.end(), c.id,
         [](const GhostExchange::Wrapped& w, std::uint64_t id) { return w.id < id; });
@@ -160,7 +160,8 @@ void Simulation::compute_forces() {
   const PrunedPairs* near = tracker_.near_pairs(particles, options, pair_state_.active);
   pair_loop_.run(particles, materials, tracker_.pairs(), near, contacts_, pair_state_, dt, ledger,
                  elastic_energy_, ended_contacts_);
-  wall_loop_.run(particles, materials, walls, tracker_.wall_candidates(), tracker_.wall_elements(),
+  const WallCandidates& candidates = tracker_.wall_candidates();
+  wall_loop_.run(particles, materials, walls, candidates.records(), candidates.elements(),
                  contacts_, wall_state_, dt, ledger, elastic_energy_, wall_contacts_,
                  ended_contacts_);
   if (ghosts_.active()) ghosts_.fold(particles);
@@ -298,7 +299,7 @@ void Simulation::load(const Archive& a) {
   n_owned_ = p.size();
   tracker_.load(a, p, options.skin, ghosts_.size());
   pair_state_.load(a, "pairs/state/", tracker_.pairs().size());
-  wall_state_.load(a, "walls/state/", tracker_.wall_candidates().size());
+  wall_state_.load(a, "walls/state/", tracker_.wall_candidates().records().size());
   for (std::size_t k = 0; k < walls.size(); ++k) {
     const std::string pre = fmt::format("walls/{}/", k);
     const auto geometry = a.get<Vec3>(pre + "geometry");

@@ -119,7 +119,7 @@ class Simulation {
   const std::vector<WallContactRecord>& wall_contacts() const { return wall_contacts_; }
   // Every particle–wall candidate of the lists, indexed like wall_state().
   const std::vector<WallContactRecord>& wall_candidates() const {
-    return tracker_.wall_candidates();
+    return tracker_.wall_candidates().records();
   }
   // The contacts that ended in the last force computation (pairs, then walls, in list order),
   // when the contact model keeps the collision record (a module asked for it); else empty.

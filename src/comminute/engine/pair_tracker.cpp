@@ -205,8 +205,7 @@ bool PairTracker::replace(const ParticleStore& p, const Walls& walls, double ski
   pause_pruning();
   pair_state.gather(nlist_.kept_from());
   // wall candidates: kept ones remapped, each fragment's found at its reach sphere
-  walls_.remap(p, walls, skin, to_new, n_kept, NeighborList::none, x_at_build_, r_at_build_,
-               wall_state);
+  walls_.remap(p, walls, skin, to_new, n_kept, x_at_build_, r_at_build_, wall_state);
   return true;
 }
 

@@ -93,7 +93,12 @@ class PairTracker {
   const std::vector<std::uint32_t>& pairs_flagged(const std::vector<std::uint8_t>& flags);
   // The particle–wall candidates, searched at each build and in-place update.
   const WallCandidates& wall_candidates() const { return walls_; }
-  WallCandidates& wall_candidates() { return walls_; }
+  // Periodic wraps: f(record, index) may change a touching wall contact's feature key before the
+  // next search carries its state (WallCandidates::rekey).
+  template <class F>
+  void rekey_wall_contacts(const ContactStateStore& state, F f) {
+    walls_.rekey(state, f);
+  }
   std::uint64_t rebuilds() const { return rebuilds_; }
 
   void save(Archive& a) const;

@@ -119,7 +119,7 @@ void Simulation::rekey_wrapped_wall_contacts() {
   // spring turns with it (sector) and a wall standing for its images re-keys the feature
   const auto& moved = ghosts_.wrapped();
   if (moved.empty()) return;
-  tracker_.wall_candidates().rekey(wall_state_, [&](WallContactRecord& c, std::size_t q) {
+  tracker_.rekey_wall_contacts(wall_state_, [&](WallContactRecord& c, std::size_t q) {
     const auto it = std::lower_bound(
         moved.begin(), moved.end(), c.id,
         [](const GhostExchange::Wrapped& w, std::uint64_t id) { return w.id < id; });

@@ -129,8 +129,9 @@ void WallCandidates::add_appended(const ParticleStore& p, const Walls& walls, do
 
 void WallCandidates::remap(const ParticleStore& p, const Walls& walls, double skin,
                            std::span<const std::uint32_t> to_new, std::size_t n_kept,
-                           std::uint32_t removed, std::span<const Vec3> x_reach,
-                           std::span<const double> r_reach, ContactStateStore& state) {
+                           std::span<const Vec3> x_reach, std::span<const double> r_reach,
+                           ContactStateStore& state) {
+  constexpr std::uint32_t removed = NeighborList::none;
   std::vector<WallContactRecord> kept;
   std::vector<std::uint32_t> state_from;
   for (std::size_t q = 0; q < records_.size(); ++q) {

@@ -42,10 +42,11 @@ class WallCandidates {
   // of the touching contacts follows. The travel restarts from 0.
   void build(const ParticleStore& p, const Walls& walls, double skin, ContactStateStore& state);
   // After parents were removed and fragments appended: the kept candidates move to their new slots
-  // (to_new: old slot -> new slot or `removed`, n_kept slots kept) with their state, and each
-  // appended fragment's are searched at its reach sphere (x_reach, r_reach: per slot).
+  // (to_new: old slot -> new slot or NeighborList::none when removed, n_kept slots kept) with
+  // their state, and each appended fragment's are searched at its reach sphere (x_reach, r_reach:
+  // per slot).
   void remap(const ParticleStore& p, const Walls& walls, double skin,
-             std::span<const std::uint32_t> to_new, std::size_t n_kept, std::uint32_t removed,
+             std::span<const std::uint32_t> to_new, std::size_t n_kept,
              std::span<const Vec3> x_reach, std::span<const double> r_reach,
              ContactStateStore& state);
   // After new particles took the slots flagged in `renewed` (of the n_old slots searched) and

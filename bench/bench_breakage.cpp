@@ -1,12 +1,13 @@
 // Cost of breakage in a bed: `bench_breakage N on|off [warmup=50] [steps=200]` builds a cubic
 // lattice of ~N weak 3 mm particles (Hertz, E = 50 MPa; spacing 0.995 d, so every particle starts
-// with six 0.5 % overlaps) in a box, agitated (random velocities up
-// to 1 m/s per component) and squeezed by a platen at 1 m/s, so that nearly every particle breaks
-// at its first collisions and the fragments break again (down to 1.5 mm); then it times `steps`
-// steps after `warmup` and prints particle-steps per second, with the breakage module ("on") or
-// without it ("off", the same bed and time step). Issue 3's benchmark; results in
-// bench/RESULTS.md ("## Breakage"). Environment: SORT_EVERY (re-sort the particles by cell every
-// this many list rebuilds, >= 0, 0 never; default 20), REPLACEMENT_INTERVAL (the breakage module's
+// with six 0.5 % overlaps) in a box, agitated (random velocities up to 1 m/s per component) and
+// squeezed by a platen at 1 m/s, so that nearly every particle breaks at its first collisions and
+// the fragments break again (down to 1.5 mm); then it times `steps` steps after `warmup` and
+// prints particle-steps per second, with the breakage module ("on") or without it ("off", the same
+// bed and time step), and with it the seconds spent in the module's post_force (growth, contact
+// loads, events) and end_of_step (replacement). Issue 3's benchmark; results in bench/RESULTS.md
+// ("## Breakage"). Environment: SORT_EVERY (re-sort the particles by cell every this many list
+// rebuilds, >= 0, 0 never; default 20), REPLACEMENT_INTERVAL (the breakage module's
 // replacement_interval, steps >= 1; default 1); any other value is refused (exit code 2).
 #include <fmt/format.h>
 #include <omp.h>
@@ -37,6 +38,44 @@ int env_count(const char* name, int fallback, int least) {
   }
   return static_cast<int>(v);
 }
+
+// The breakage module with a stopwatch on each of its hooks: the seconds the step spends in
+// breakage (criterion, events, replacement and the neighbour-list updates it calls for).
+class TimedModule : public comminute::Module {
+ public:
+  explicit TimedModule(std::unique_ptr<comminute::Module> inner) : inner_(std::move(inner)) {}
+  std::string name() const override { return inner_->name(); }
+  comminute::ModuleStage stage() const override { return inner_->stage(); }
+  void declare_contact_state(comminute::ContactPipeline& c) override {
+    inner_->declare_contact_state(c);
+  }
+  void setup(comminute::Simulation& s) override { inner_->setup(s); }
+  void pre_force(comminute::Simulation& s) override { inner_->pre_force(s); }
+  void post_force(comminute::Simulation& s) override {
+    timed(post_, [&] { inner_->post_force(s); });
+  }
+  void end_of_step(comminute::Simulation& s) override {
+    timed(end_, [&] { inner_->end_of_step(s); });
+  }
+  void announce_sizes(std::vector<comminute::ParticleSize>& sizes,
+                      const comminute::Simulation& s) const override {
+    inner_->announce_sizes(sizes, s);
+  }
+  void reset() { post_ = end_ = 0; }
+  // seconds in post_force and end_of_step since the last reset() (the module does its work there)
+  double post() const { return post_; }
+  double end() const { return end_; }
+
+ private:
+  template <class F>
+  static void timed(double& into, F f) {
+    const double t0 = omp_get_wtime();
+    f();
+    into += omp_get_wtime() - t0;
+  }
+  std::unique_ptr<comminute::Module> inner_;
+  double post_ = 0, end_ = 0;
+};
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -81,6 +120,7 @@ int main(int argc, char** argv) {
   sim.walls.push_back(std::move(platen));
   const double min_breakable = 0.0015, ratio = 0.3;
   breakage::BreakageModule* module = nullptr;
+  TimedModule* timed = nullptr;
   if (on) {
     breakage::TavaresParameters tp;
     tp.size_effect = {0.1, 0.0, 1.0, 1.0};  // J/kg absorbed: weak, breaks at first collisions
@@ -96,7 +136,9 @@ int main(int argc, char** argv) {
     opt.replacement_interval = env_count("REPLACEMENT_INTERVAL", opt.replacement_interval, 1);
     auto m = std::make_unique<breakage::BreakageModule>(std::move(mats), opt);
     module = m.get();
-    sim.modules.push_back(std::move(m));
+    auto t = std::make_unique<TimedModule>(std::move(m));
+    timed = t.get();
+    sim.modules.push_back(std::move(t));
   }
   // Same time step both ways: resolves the smallest fragment breakage can make.
   const double r_min = 0.5 * ratio * min_breakable;
@@ -105,6 +147,7 @@ int main(int argc, char** argv) {
   sim.setup();
   sim.run(static_cast<std::uint64_t>(warm));
   const std::uint64_t b0 = module ? module->breakages() : 0;
+  if (timed) timed->reset();
   double particle_steps = 0;
   const auto t0 = std::chrono::steady_clock::now();
   for (long s = 0; s < steps; ++s) {
@@ -115,10 +158,10 @@ int main(int argc, char** argv) {
   fmt::print(
       "breakage={} N0={} N_end={} threads={} warmup={} steps={} seconds={:.3f} "
       "particle_steps_per_s={:.4g} breakages_total={} breakages_in_window={} pending={} "
-      "rebuilds={}\n",
+      "rebuilds={} breakage_seconds(post_force,end_of_step)={:.3f},{:.3f}\n",
       on ? "on" : "off", side * side * side, sim.particles.size(), omp_get_max_threads(), warm,
       steps, sec, particle_steps / sec, module ? module->breakages() : 0,
       module ? module->breakages() - b0 : 0, module ? module->pending() : 0,
-      sim.neighbor_rebuilds());
+      sim.neighbor_rebuilds(), timed ? timed->post() : 0.0, timed ? timed->end() : 0.0);
   return 0;
 }

@@ -55,12 +55,13 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
       nl.size(), [&](std::size_t k) { return (state[nl.first[k]] | state[nl.second[k]]) != 0; },
       hits, select_parts_);
   // the largest radius (m) the neighbours allow each growing particle, +inf where none bounds it
-  // (the growth below is capped at the final radius as well); filled by the scatter (fresh)
+  // (the growth below is capped at the final radius as well); reset by the scatter
   std::vector<std::uint8_t>& near = hit_near_;
   near.resize(hits.size());
-  parallel_scatter(
-      hits.size(), limit, std::numeric_limits<double>::infinity(),
-      [&](std::size_t m, std::vector<double>& lim) {
+  owner_scatter(
+      hits.size(), [&](std::size_t m) { return nl.first[hits[m]]; }, limit,
+      std::numeric_limits<double>::infinity(),
+      [&](std::size_t m, auto& bound) {
         const std::uint32_t i = nl.first[hits[m]], j = nl.second[hits[m]];
         const double apart = p.radius[i] + p.radius[j] + 2 * growth_max;
         const double d2 = norm2(p.x[i] - p.x[j]);
@@ -71,20 +72,20 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
           const double gap = std::sqrt(d2) - p.radius[i] - p.radius[j];
           const double room = std::max(0.0, gap) + eps * std::min(p.radius[i], p.radius[j]);
           const double share = gi && gj ? 0.5 * room : room;
-          if (gi) lim[i] = std::min(lim[i], p.radius[i] + share);
-          if (gj) lim[j] = std::min(lim[j], p.radius[j] + share);
+          if (gi) bound(i, p.radius[i] + share);
+          if (gj) bound(j, p.radius[j] + share);
         } else if (gi && gj) {  // two growing spheres share the room up to the allowed overlap
           const double room =
               std::sqrt(d2) - p.radius[i] - p.radius[j] + eps * std::min(p.radius[i], p.radius[j]);
-          lim[i] = std::min(lim[i], p.radius[i] + 0.5 * room);
-          lim[j] = std::min(lim[j], p.radius[j] + 0.5 * room);
+          bound(i, p.radius[i] + 0.5 * room);
+          bound(j, p.radius[j] + 0.5 * room);
         } else if (gi) {
-          lim[i] = std::min(lim[i], radius_allowed(p.x[i], target[i], {p.x[j], p.radius[j]}, eps));
+          bound(i, radius_allowed(p.x[i], target[i], {p.x[j], p.radius[j]}, eps));
         } else {
-          lim[j] = std::min(lim[j], radius_allowed(p.x[j], target[j], {p.x[i], p.radius[i]}, eps));
+          bound(j, radius_allowed(p.x[j], target[j], {p.x[i], p.radius[i]}, eps));
         }
       },
-      [](double a, double b) { return std::min(a, b); }, &limit_copies_, true);
+      [](double a, double b) { return std::min(a, b); }, limit_queues_);
   // a ghost's neighbours bound its owner's growth (periodic boundaries)
   for (std::size_t s = p.owned(); s < n; ++s)
     limit[p.owner_of(s)] = std::min(limit[p.owner_of(s)], limit[s]);

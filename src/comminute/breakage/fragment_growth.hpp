@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "comminute/core/parallel.hpp"
+
 namespace comminute {
 class Simulation;
 class ParticleStore;
@@ -49,7 +51,7 @@ class FragmentGrowth {
   std::vector<std::uint8_t> hit_near_;    // per hit pair: 1 when close enough to touch after growth
   std::vector<std::uint32_t> free_slots_;  // growing particles with room to grow, ascending
   std::vector<std::vector<std::uint32_t>> select_parts_;  // per thread, for parallel_select
-  std::vector<std::vector<double>> limit_copies_;         // other threads' copies of limit_
+  OwnerScatterQueues<double> limit_queues_;               // owner_scatter's, for limit_
 };
 
 }  // namespace comminute::breakage

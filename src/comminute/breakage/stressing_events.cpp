@@ -52,7 +52,7 @@ void StressingEvents::clear(ParticleStore& p, std::size_t s) const {
 void StressingEvents::gather_loads(const Simulation& sim) {
   const auto& p = sim.particles;
   const std::size_t n = p.size();
-  contact_load_.resize(n);  // cleared by the scatter below (fresh), on the first thread
+  contact_load_.resize(n);  // reset by the scatter below, each thread its own slots
   const auto& nl = sim.pairs();
   const ContactStateStore& pairs = sim.pair_state();
   const LoadingRecord& loading = *sim.contacts().loading();
@@ -60,31 +60,27 @@ void StressingEvents::gather_loads(const Simulation& sim) {
   std::vector<std::uint32_t>& touching = touching_;
   parallel_select(
       nl.size(), [&](std::size_t k) { return pairs.active[k] != 0; }, touching, select_parts_);
-  parallel_scatter(
-      touching.size(), contact_load_, ContactLoad{},
-      [&](std::size_t m, std::vector<ContactLoad>& acc) {
+  const auto combine = [](ContactLoad x, const ContactLoad& y) {
+    return ContactLoad{x.work + y.work, x.force + y.force, std::max(x.largest, y.largest),
+                       x.approach + y.approach};
+  };
+  owner_scatter(
+      touching.size(), [&](std::size_t m) { return nl.first[touching[m]]; }, contact_load_,
+      ContactLoad{},
+      [&](std::size_t m, auto& add) {
         const std::uint32_t k = touching[m];
         const std::uint32_t i = nl.first[k], j = nl.second[k];
         const StateRef h = pairs.at(k);
         const std::size_t a = p.material[i], b = p.material[j];
         const double ab = share_[a * n_materials_ + b], ba = share_[b * n_materials_ + a];
-        acc[i].work += ab * loading.loading_work(h);
-        acc[j].work += ba * loading.loading_work(h);
+        const double work = loading.loading_work(h);
         const double ke = approach_energy(p.x[i] - p.x[j], p.v[i] - p.v[j],
                                           p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]));
-        acc[i].approach += ab * ke;
-        acc[j].approach += ba * ke;
         const double f = loading.normal_force(h);
-        acc[i].force += f;
-        acc[j].force += f;
-        acc[i].largest = std::max(acc[i].largest, f);
-        acc[j].largest = std::max(acc[j].largest, f);
+        add(i, ContactLoad{ab * work, f, f, ab * ke});
+        add(j, ContactLoad{ba * work, f, f, ba * ke});
       },
-      [](ContactLoad x, const ContactLoad& y) {
-        return ContactLoad{x.work + y.work, x.force + y.force, std::max(x.largest, y.largest),
-                           x.approach + y.approach};
-      },
-      &load_copies_, true);
+      combine, load_queues_);
   // a ghost's contacts load its owner (periodic boundaries)
   for (std::size_t s = p.owned(); s < n; ++s) {
     ContactLoad& o = contact_load_[p.owner_of(s)];

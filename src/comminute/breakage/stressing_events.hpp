@@ -23,6 +23,7 @@
 
 #include "comminute/breakage/breakage_settings.hpp"
 #include "comminute/breakage/event_log.hpp"
+#include "comminute/core/parallel.hpp"
 #include "comminute/engine/simulation.hpp"
 
 namespace comminute::breakage {
@@ -64,9 +65,9 @@ class StressingEvents {
     double of(ForceMeasure m) const { return m == ForceMeasure::contact_sum ? force : largest; }
   };
   std::vector<ContactLoad> contact_load_;  // per slot, scratch
-  // scratch of gather_loads, kept between steps: the other threads' copies of contact_load_, the
-  // pairs in contact and parallel_select's parts
-  std::vector<std::vector<ContactLoad>> load_copies_;
+  // scratch of gather_loads, kept between steps: owner_scatter's queues, the pairs in contact and
+  // parallel_select's parts
+  OwnerScatterQueues<ContactLoad> load_queues_;
   std::vector<std::uint32_t> touching_;
   std::vector<std::vector<std::uint32_t>> select_parts_;
   // What one range of particles hands on after assess_range, in slot order.

@@ -152,6 +152,9 @@ void StressingEvents::assess_range(Simulation& sim, const BreakageMaterials& mat
   auto& stressing = p.field(f_stressing_);
   const auto& target = p.field(f.target);
   for (std::size_t i = i0; i < i1; ++i) {
+    // no loaded contact, no event and a zero baseline (most fragments in flight): every branch
+    // below would leave the particle as it is, so it is passed over reading three arrays
+    if (contact_load_[i].work == 0 && in_event[i] == 0 && baseline[i] == 0) continue;
     const auto& mat = materials[p.material[i]];
     if (!mat || (p.flags[i] & (pflag::fixed | pflag::unbreakable | pflag::remove))) continue;
     // A growing fragment already carries its full mass and transmits real contact forces: it is

@@ -76,7 +76,8 @@ using OwnerScatterQueues = std::vector<std::vector<std::pair<std::uint32_t, T>>>
 // thread order. The same thread count gives the same result and one thread gives the serial
 // loop's; no thread copies `out` (parallel_scatter's copies cost a pass over `out` per thread,
 // which is most of the work when a minority of slots receive anything). Items out of owner order
-// give the same sums, only more of them queued. nt = 1 below kScatterMin items.
+// are still merged into the right slots, only more of them through the queues (the order in which
+// a slot's values are combined then differs). nt = 1 below kScatterMin items.
 template <class T, class Owner, class Body, class Combine>
 void owner_scatter(std::size_t n, Owner&& owner, std::vector<T>& out, const T& identity,
                    Body&& body, Combine&& combine, OwnerScatterQueues<T>& queues) {

@@ -176,6 +176,72 @@ TEST(Parallel, OwnerScatterMatchesTheSerialLoop) {
   for (std::size_t i = 0; i < slots; ++i) EXPECT_NEAR(s2[i], serial_sum[i], 1e-12);
 }
 
+// ParticleStore::extend and put (breakage writes many parents' fragments at once into slots laid
+// out beforehand) against add_with_mass one by one: a store of 20000 (past the size where extend
+// resizes its arrays on all threads) with two fields, 3000 particles appended either way, the
+// slots of the second store written by two threads in interleaved order; every array, field and
+// the next id must be exactly the same, and the blank slots must hold the fields' defaults.
+TEST(Parallel, StoreExtendedAndPutOnTwoThreadsEqualsAppendingOneByOne) {
+  auto base = [] {
+    ParticleStore p;
+    p.add_field("damage", 0.25);
+    p.add_field("target", -1.0);
+    Rng rng(5);
+    for (int k = 0; k < 20000; ++k) {
+      ParticleInit init;
+      init.x = {rng.uniform(0, 1), rng.uniform(0, 1), rng.uniform(0, 1)};
+      init.radius = 0.001;
+      init.density = 2500;
+      p.add(init);
+    }
+    return p;
+  };
+  auto fresh = [](std::size_t k) {
+    ParticleInit init;
+    init.x = {0.1 * static_cast<double>(k), 0, 1};
+    init.v = {0, static_cast<double>(k), 0};
+    init.radius = 0.0002 + 1e-7 * static_cast<double>(k);
+    init.material = static_cast<std::uint16_t>(k % 3);
+    init.flags = k % 2 == 0 ? pflag::growing : 0;
+    return init;
+  };
+  constexpr std::size_t added = 3000;
+  ParticleStore one = base();
+  for (std::size_t k = 0; k < added; ++k)
+    one.add_with_mass(fresh(k), 1e-6 * static_cast<double>(k));
+  ParticleStore two = base();
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(2);
+  const std::size_t first_slot = two.size();
+  two.extend(added);
+  for (std::size_t s = first_slot; s < two.size(); ++s) {  // blank until put
+    EXPECT_EQ(two.field(0)[s], 0.25);
+    EXPECT_EQ(two.field(1)[s], -1.0);
+    EXPECT_EQ(two.id[s], 0u);
+  }
+  const std::uint64_t first_id = two.take_ids(added);
+#pragma omp parallel for schedule(static, 1)
+  for (std::size_t k = 0; k < added; ++k)
+    two.put(first_slot + k, fresh(k), 1e-6 * static_cast<double>(k), first_id + k);
+  omp_set_num_threads(saved);
+  EXPECT_EQ(two.next_id(), one.next_id());
+  EXPECT_EQ(two.x, one.x);
+  EXPECT_EQ(two.v, one.v);
+  EXPECT_EQ(two.w, one.w);
+  EXPECT_EQ(two.f, one.f);
+  EXPECT_EQ(two.t, one.t);
+  EXPECT_EQ(two.radius, one.radius);
+  EXPECT_EQ(two.mass, one.mass);
+  EXPECT_EQ(two.inertia, one.inertia);
+  EXPECT_EQ(two.id, one.id);
+  EXPECT_EQ(two.material, one.material);
+  EXPECT_EQ(two.flags, one.flags);
+  EXPECT_EQ(two.field(0), one.field(0));
+  EXPECT_EQ(two.field(1), one.field(1));
+  two.add_ghost(0, {}, {}, {});
+  EXPECT_THROW(two.extend(1), Error);  // ghosts are the force stage's, never extended over
+}
+
 // Breakage on two threads: a pre-stressed lattice of 9261 weak particles squeezed by a platen
 // (the benchmark's bed, small), so that the module's threaded loops (contact loads, growth) and
 // in-place fragment insertion all run; the same thread count must repeat bit for bit. Also run

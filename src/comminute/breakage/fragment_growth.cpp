@@ -15,6 +15,10 @@
 
 namespace comminute::breakage {
 
+namespace {
+constexpr std::size_t kAhead = 16;  // hit pairs between a particle's prefetch and its use
+}  // namespace
+
 void FragmentGrowth::recount(const ParticleStore& p) {
   pending_ = 0;
   for (std::size_t i = 0; i < p.size(); ++i) pending_ += (p.flags[i] & pflag::growing) ? 1 : 0;
@@ -36,12 +40,19 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
   r_before.resize(n);
   const auto& target = p.field(f_target);
   double target_max = 0;  // m, the largest final radius of a growing particle
+  {
+    // (plain pointers: through the vectors every store would reload their data pointers)
+    const std::uint32_t* flags = p.flags.data();
+    const double *radius = p.radius.data(), *final_radius = target.data();
+    std::uint8_t* st = state.data();
+    double* rb = r_before.data();
 #pragma omp parallel for schedule(static) reduction(max : target_max) if (n >= kParallelMin)
-  for (std::size_t i = 0; i < n; ++i) {
-    const bool g = (p.flags[i] & pflag::growing) != 0;
-    state[i] = g ? was_growing : 0;
-    r_before[i] = p.radius[i];
-    target_max = std::max(target_max, g ? target[i] : 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      const bool g = (flags[i] & pflag::growing) != 0;
+      st[i] = g ? was_growing : 0;
+      rb[i] = radius[i];
+      target_max = std::max(target_max, g ? final_radius[i] : 0.0);
+    }
   }
   // No particle grows by more than this (m) in the step. A pair whose gap is at least twice it
   // cannot bound either particle's growth: every rule below allows each of them at least half the
@@ -56,17 +67,22 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
       hits, select_parts_);
   // the largest radius (m) the neighbours allow each growing particle, +inf where none bounds it
   // (the growth below is capped at the final radius as well); reset by the scatter
-  std::vector<std::uint8_t>& near = hit_near_;
-  near.resize(hits.size());
+  std::vector<double>& hit_d2 = hit_d2_;
+  hit_d2.resize(hits.size());
   owner_scatter(
       hits.size(), [&](std::size_t m) { return nl.first[hits[m]]; }, limit,
       std::numeric_limits<double>::infinity(),
       [&](std::size_t m, auto& bound) {
+        // the second particles are scattered in memory: asked for kAhead hits before their use
+        const std::uint32_t ja = nl.second[hits[std::min(m + kAhead, hits.size() - 1)]];
+        __builtin_prefetch(&p.x[ja]);
+        __builtin_prefetch(&p.radius[ja]);
         const std::uint32_t i = nl.first[hits[m]], j = nl.second[hits[m]];
         const double apart = p.radius[i] + p.radius[j] + 2 * growth_max;
         const double d2 = norm2(p.x[i] - p.x[j]);
-        near[m] = d2 > apart * apart * (1 + 1e-9) ? 0 : 1;
-        if (near[m] == 0) return;
+        const bool near = !(d2 > apart * apart * (1 + 1e-9));
+        hit_d2[m] = near ? d2 : std::numeric_limits<double>::infinity();
+        if (!near) return;
         const bool gi = state[i] != 0, gj = state[j] != 0;
         if (pushing) {  // the overlap may deepen by eps min(r_i, r_j), shared when both grow
           const double gap = std::sqrt(d2) - p.radius[i] - p.radius[j];
@@ -166,13 +182,18 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
     double sum = 0;  // in pair order over thread t's range of the hits
     const std::size_t m1 = hits.size() * (t + 1) / static_cast<std::size_t>(nh);
     for (std::size_t m = hits.size() * t / static_cast<std::size_t>(nh); m < m1; ++m) {
-      if (near[m] == 0) continue;  // too far apart to touch after growth (see growth_max)
+      // +inf: too far apart to touch after growth (see growth_max)
+      const std::uint32_t ja = nl.second[hits[std::min(m + kAhead, m1 - 1)]];
+      __builtin_prefetch(&p.radius[ja]);
+      __builtin_prefetch(&r_before[ja]);
+      const double d2 = hit_d2[m];
+      if (d2 == std::numeric_limits<double>::infinity()) continue;
       const std::uint32_t k = hits[m];
       const std::uint32_t i = nl.first[k], j = nl.second[k];
       if (((state[i] | state[j]) & grew) == 0) continue;  // nothing grew
       // apart by a clear margin (most pairs): no overlap after, no root taken; the margin
       // (relative 1e-9, far above rounding) keeps the exact test below for the touching ones
-      const double d2 = norm2(p.x[i] - p.x[j]), reach = p.radius[i] + p.radius[j];
+      const double reach = p.radius[i] + p.radius[j];
       if (d2 > reach * reach * (1 + 1e-9)) continue;
       const double dist = std::sqrt(d2);
       const double before = r_before[i] + r_before[j] - dist,

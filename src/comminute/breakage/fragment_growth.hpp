@@ -48,7 +48,9 @@ class FragmentGrowth {
   std::vector<double> limit_, r_before_;
   std::vector<std::uint8_t> state_;
   std::vector<std::uint32_t> hit_pairs_;  // pairs with a growing particle, in list order
-  std::vector<std::uint8_t> hit_near_;    // per hit pair: 1 when close enough to touch after growth
+  // per hit pair: the squared distance (m2) of its centres when close enough to touch after
+  // growth, else +inf; the energy pass reads it in hit order instead of both positions again
+  std::vector<double> hit_d2_;
   std::vector<std::uint32_t> free_slots_;  // growing particles with room to grow, ascending
   std::vector<std::vector<std::uint32_t>> select_parts_;  // per thread, for parallel_select
   OwnerScatterQueues<double> limit_queues_;               // owner_scatter's, for limit_

@@ -130,7 +130,23 @@ void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
     // the parents are removed and every fragment appended.
     const bool in_slot = std::all_of(outcomes.begin(), outcomes.end(),
                                      [](const Outcome& o) { return !o.placed.empty(); });
-    for (Outcome& o : outcomes) append(sim, ctx, o, in_slot);
+    // slots and ids as appending parent by parent would give them; the store is then written on
+    // all threads, parent by parent, and the books kept in parent order
+    std::size_t slot = p.size(), ids = 0;
+    for (Outcome& o : outcomes) {
+      if (p.flags[o.parent] & pflag::growing) ctx.growth.dropped();
+      o.first_slot = slot;
+      o.first_id = ids;
+      slot += o.placed.size() - (in_slot ? 1 : 0);
+      ids += o.placed.size();
+    }
+    p.extend(slot - p.size());
+    const std::uint64_t first_id = p.take_ids(ids);
+    parallel_for_each(outcomes.size(), [&](std::size_t q) {
+      outcomes[q].first_id += first_id;
+      write(sim, ctx, outcomes[q], in_slot);
+    });
+    for (const Outcome& o : outcomes) book_fragments(sim, ctx, o);
     parallel_for_each(outcomes.size(), [&](std::size_t q) {
       Outcome& o = outcomes[q];
       for (const std::size_t s : o.slots) ctx.born(s, o.rng);
@@ -229,28 +245,28 @@ void Replacement::place(const Simulation& sim, const Context& ctx, Outcome& o) c
   o.fines_pe = -p.mass_scale(parent) * o.progeny.fines_mass * dot(sim.gravity, p.x[parent]);
 }
 
-void Replacement::append(Simulation& sim, const Context& ctx, Outcome& o, bool in_slot) {
+void Replacement::write(Simulation& sim, const Context& ctx, Outcome& o, bool in_slot) const {
   auto& p = sim.particles;
   const std::size_t parent = o.parent;
-  if (p.flags[parent] & pflag::growing) ctx.growth.dropped();
   const std::uint16_t material = p.material[parent];
-  const std::uint64_t parent_id = p.id[parent];
-  const std::uint32_t generation =
-      static_cast<std::uint32_t>(p.field(ctx.fields.generation)[parent]) + 1;
+  const Vec3 parent_x = p.x[parent];
+  o.parent_id = p.id[parent];
+  o.generation = static_cast<std::uint32_t>(p.field(ctx.fields.generation)[parent]) + 1;
   std::vector<double> inherited(p.field_names().size());  // the parent's fields
   for (std::size_t q = 0; q < inherited.size(); ++q) inherited[q] = p.field(q)[parent];
   // the fragment that takes the parent's slot: the one with the most room inside the parent at
   // its final size, so that growing it is least likely to call for a neighbour-list rebuild
-  std::size_t own = o.placed.size();
+  o.own = o.placed.size();
   double room = -std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; in_slot && k < o.placed.size(); ++k) {
-    const double r = o.r_parent - norm(o.placed[k].x - p.x[parent]) - o.radii[k];
+    const double r = o.r_parent - norm(o.placed[k].x - parent_x) - o.radii[k];
     if (r > room) {
       room = r;
-      own = k;
+      o.own = k;
     }
   }
   if (!in_slot) p.flags[parent] |= pflag::remove;
+  std::size_t next = o.first_slot;
   for (std::size_t k = 0; k < o.placed.size(); ++k) {
     const Fragment& f = o.progeny.fragments[k];
     ParticleInit init;
@@ -262,28 +278,35 @@ void Replacement::append(Simulation& sim, const Context& ctx, Outcome& o, bool i
     init.flags = f.fines ? pflag::unbreakable : 0;
     const bool growing = o.placed[k].r < o.radii[k];
     if (growing) init.flags |= pflag::growing;
-    const std::uint64_t id =
-        k == own ? p.renew(parent, init, o.masses[k]) : p.add_with_mass(init, o.masses[k]);
-    const std::size_t s = k == own ? parent : p.size() - 1;
-    if (k == own) renewed_.push_back(static_cast<std::uint32_t>(s));
+    const std::size_t s = k == o.own ? parent : next++;
+    p.put(s, init, o.masses[k], o.first_id + k);
     o.slots.push_back(s);
-    fragments_added_.push_back({id, o.radii[k]});
-    ctx.log.add_fragment(
-        {sim.time, parent_id, id, f.diameter, o.masses[k] / o.scales[k], generation, f.fines});
     p.inertia[s] = o.inertia[k];  // of the full-size sphere from the start
     // fields of the parent (composition and the like are inherited)
     for (std::size_t q = 0; q < inherited.size(); ++q) p.field(q)[s] = inherited[q];
-    p.field(ctx.fields.generation)[s] = generation;
-    p.field(ctx.fields.parent_id)[s] = static_cast<double>(parent_id);
+    p.field(ctx.fields.generation)[s] = o.generation;
+    p.field(ctx.fields.parent_id)[s] = static_cast<double>(o.parent_id);
     p.field(ctx.fields.target)[s] = growing ? o.radii[k] : 0.0;
     if (ctx.rayleigh_floor > 0 && ctx.floor_rule == FloorRule::density_scaling)
       p.field(ctx.fields.mass_scale)[s] = o.scales[k];
-    if (growing) ctx.growth.started();
+    if (growing) ++o.growing;
     if (f.fines)
       ++o.rec.fines_particles;
     else
       ++o.rec.fragments;
   }
+}
+
+void Replacement::book_fragments(const Simulation& sim, const Context& ctx, const Outcome& o) {
+  for (std::size_t k = 0; k < o.placed.size(); ++k) {
+    const Fragment& f = o.progeny.fragments[k];
+    const std::uint64_t id = o.first_id + k;
+    if (k == o.own) renewed_.push_back(static_cast<std::uint32_t>(o.slots[k]));
+    fragments_added_.push_back({id, o.radii[k]});
+    ctx.log.add_fragment(
+        {sim.time, o.parent_id, id, f.diameter, o.masses[k] / o.scales[k], o.generation, f.fines});
+  }
+  for (std::size_t k = 0; k < o.growing; ++k) ctx.growth.started();
 }
 
 double Replacement::created_energy(const Simulation& sim, const std::vector<Outcome>& outcomes,

@@ -81,6 +81,12 @@ class Replacement {
     double fines_pe =
         0;    // J: potential energy of the fines' mass at the parent's centre (inertial)
     Rng rng;  // the parent's breakage stream, left at its fragments' strengths
+    std::size_t first_slot = 0;  // the first slot of its fragments appended to the store
+    std::uint64_t first_id = 0;  // its fragments' ids are first_id, first_id + 1, ...
+    std::size_t own = 0;         // the fragment in the parent's slot (placed.size(): none)
+    std::uint64_t parent_id = 0;
+    std::uint32_t generation = 0;    // of its fragments
+    std::size_t growing = 0;         // fragments placed smaller than their final size
     std::vector<std::size_t> slots;  // of its fragments once in the store
     double created = 0;              // J: elastic energy of its fragments' starting overlaps
   };
@@ -88,10 +94,14 @@ class Replacement {
   void draw(const Simulation& sim, const Context& ctx, Outcome& o) const;
   // Placement inside the parent and the fragments' velocities (after the mass rule).
   void place(const Simulation& sim, const Context& ctx, Outcome& o) const;
-  // Puts the fragments in the store (serial: slots and ids in parent order). in_slot: the one with
-  // the most room inside the parent takes the parent's slot (ParticleStore::renew), the others
-  // are appended; else all are appended and the parent is marked for removal.
-  void append(Simulation& sim, const Context& ctx, Outcome& o, bool in_slot);
+  // Writes the fragments into the store at slots and ids laid out beforehand (o.first_slot,
+  // o.first_id; parents on all threads). in_slot: the one with the most room inside the parent
+  // takes the parent's slot, the others go to the appended slots; else all are appended and the
+  // parent is marked for removal.
+  void write(Simulation& sim, const Context& ctx, Outcome& o, bool in_slot) const;
+  // Books the fragments of o (written) for the pair list, the log and growth: serial, in parent
+  // order.
+  void book_fragments(const Simulation& sim, const Context& ctx, const Outcome& o);
   // Elastic energy of the starting overlaps of outcome q's fragments with their siblings, the
   // neighbours and the walls; a neighbour that broke in this batch counts by its fragments, once
   // per pair of families (from the later parent). batch[j]: 1 + the outcome of slot j, or 0.

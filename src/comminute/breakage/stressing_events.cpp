@@ -11,6 +11,8 @@
 namespace comminute::breakage {
 
 namespace {
+constexpr std::size_t kAhead = 16;  // contacts between a particle's prefetch and its use
+
 // Normal relative kinetic energy (J) of a contact still approaching: (1/2) mu u^2 with u the
 // approach speed along `normal` (from the other body to this one; any length) of the relative
 // velocity `dv` (this body's minus the other's), 0 when separating.
@@ -68,6 +70,12 @@ void StressingEvents::gather_loads(const Simulation& sim) {
       touching.size(), [&](std::size_t m) { return nl.first[touching[m]]; }, contact_load_,
       ContactLoad{},
       [&](std::size_t m, auto& add) {
+        // the second particles are scattered in memory: asked for kAhead contacts before use
+        const std::uint32_t ja = nl.second[touching[std::min(m + kAhead, touching.size() - 1)]];
+        __builtin_prefetch(&p.x[ja]);
+        __builtin_prefetch(&p.v[ja]);
+        __builtin_prefetch(&p.mass[ja]);
+        __builtin_prefetch(&p.material[ja]);
         const std::uint32_t k = touching[m];
         const std::uint32_t i = nl.first[k], j = nl.second[k];
         const StateRef h = pairs.at(k);

@@ -34,6 +34,11 @@ std::uint64_t ParticleStore::add_with_mass(const ParticleInit& p, double m) {
 
 std::uint64_t ParticleStore::renew(std::size_t i, const ParticleInit& p, double m) {
   if (!ghost_owner.empty()) throw Error("ParticleStore::renew() with ghosts present");
+  put(i, p, m, next_id_);
+  return next_id_++;
+}
+
+void ParticleStore::put(std::size_t i, const ParticleInit& p, double m, std::uint64_t new_id) {
   x[i] = p.x;
   v[i] = p.v;
   w[i] = p.w;
@@ -42,11 +47,44 @@ std::uint64_t ParticleStore::renew(std::size_t i, const ParticleInit& p, double 
   radius[i] = p.radius;
   mass[i] = m;
   inertia[i] = 0.4 * m * p.radius * p.radius;
-  id[i] = next_id_;
+  id[i] = new_id;
   material[i] = p.material;
   flags[i] = p.flags;
   for (std::size_t k = 0; k < fields_.size(); ++k) fields_[k][i] = field_defaults_[k];
-  return next_id_++;
+}
+
+std::uint64_t ParticleStore::take_ids(std::size_t n) {
+  const std::uint64_t first = next_id_;
+  next_id_ += n;
+  return first;
+}
+
+template <class Op>
+void ParticleStore::each_array(Op&& op, bool threaded) {
+  std::vector<std::function<void()>> jobs{[&] { op(x, Vec3{}); },
+                                          [&] { op(v, Vec3{}); },
+                                          [&] { op(w, Vec3{}); },
+                                          [&] { op(f, Vec3{}); },
+                                          [&] { op(t, Vec3{}); },
+                                          [&] { op(radius, 0.0); },
+                                          [&] { op(mass, 0.0); },
+                                          [&] { op(inertia, 0.0); },
+                                          [&] { op(id, std::uint64_t{0}); },
+                                          [&] { op(material, std::uint16_t{0}); },
+                                          [&] { op(flags, std::uint32_t{0}); }};
+  for (std::size_t k = 0; k < fields_.size(); ++k)
+    jobs.emplace_back([&op, this, k] { op(fields_[k], field_defaults_[k]); });
+  const auto n_jobs = static_cast<std::ptrdiff_t>(jobs.size());
+#pragma omp parallel for schedule(dynamic) if (threaded)
+  for (std::ptrdiff_t k = 0; k < n_jobs; ++k) jobs[static_cast<std::size_t>(k)]();
+}
+
+void ParticleStore::extend(std::size_t n) {
+  if (!ghost_owner.empty()) throw Error("ParticleStore::extend() with ghosts present");
+  const std::size_t to = size() + n;
+  // threaded from a size where the copy of a reallocation and the first touch of fresh pages
+  // outweigh starting the threads
+  each_array([to](auto& a, const auto& fresh) { a.resize(to, fresh); }, to >= 16384);
 }
 
 namespace {
@@ -113,18 +151,7 @@ std::size_t ParticleStore::compact() {
   for (std::size_t i = 0; i < before; ++i)
     if (flags[i] & pflag::remove) fl.push_back(i);
   if (fl.empty()) return 0;
-  // one job per array, shared out between the threads (the arrays are independent)
-  std::vector<std::function<void()>> jobs{
-      [&] { compact_vector(x, fl); },    [&] { compact_vector(v, fl); },
-      [&] { compact_vector(w, fl); },    [&] { compact_vector(f, fl); },
-      [&] { compact_vector(t, fl); },    [&] { compact_vector(radius, fl); },
-      [&] { compact_vector(mass, fl); }, [&] { compact_vector(inertia, fl); },
-      [&] { compact_vector(id, fl); },   [&] { compact_vector(material, fl); },
-      [&] { compact_vector(flags, fl); }};
-  for (auto& fld : fields_) jobs.emplace_back([&fld, &fl] { compact_vector(fld, fl); });
-  const auto n_jobs = static_cast<std::ptrdiff_t>(jobs.size());
-#pragma omp parallel for schedule(dynamic) if (before >= 16384)
-  for (std::ptrdiff_t k = 0; k < n_jobs; ++k) jobs[static_cast<std::size_t>(k)]();
+  each_array([&fl](auto& a, const auto&) { compact_vector(a, fl); }, before >= 16384);
   return before - size();
 }
 

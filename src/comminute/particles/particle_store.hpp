@@ -67,6 +67,15 @@ class ParticleStore {
   // place of the one there: breakage writes a fragment into its parent's slot, so that nothing
   // after it moves. Returns the id.
   std::uint64_t renew(std::size_t i, const ParticleInit& p, double mass);
+  // Appends n blank slots [size(), size() + n) (zero kinematics, radius, mass, id and flags;
+  // fields at their defaults), one array per job on all threads, for put() to fill: breakage
+  // writes the fragments of many parents at once, each parent's into slots known beforehand.
+  void extend(std::size_t n);
+  // n fresh ids: [returned, returned + n), never handed out again.
+  std::uint64_t take_ids(std::size_t n);
+  // Writes a particle with id `id` into slot i as renew() does (fields at their defaults, zero
+  // force and torque). Slots of different calls may be written on different threads.
+  void put(std::size_t i, const ParticleInit& p, double mass, std::uint64_t id);
   // Removes all particles whose flags have pflag::remove; keeps the order of the others.
   // Returns the number removed. Neither this nor permute() may run while ghosts are present.
   std::size_t compact();
@@ -106,6 +115,10 @@ class ParticleStore {
   std::vector<std::vector<double>> fields_;
   std::vector<std::string> field_names_;
   std::vector<double> field_defaults_;
+  // op(array, value of a fresh element) applied to every per-particle array, one job per array on
+  // all threads when `threaded` (the arrays are independent)
+  template <class Op>
+  void each_array(Op&& op, bool threaded);
 };
 
 }  // namespace comminute

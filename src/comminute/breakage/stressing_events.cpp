@@ -97,23 +97,42 @@ void StressingEvents::gather_loads(const Simulation& sim) {
     o.largest = std::max(o.largest, contact_load_[s].largest);
     o.approach += contact_load_[s].approach;
   }
-  std::vector<WallContact> found;
-  for (const auto& c : sim.wall_contacts()) {
-    const std::size_t a = p.material[c.particle], b = sim.walls[c.wall]->material;
-    const StateRef h = sim.wall_state().at(c.candidate);
-    const double e = share_[a * n_materials_ + b];
-    contact_load_[c.particle].work += e * loading.loading_work(h);
-    const Wall& w = *sim.walls[c.wall];
-    found.clear();
-    w.contacts(p.x[c.particle], p.radius[c.particle], 0.0, found);
-    for (const auto& fc : found)
-      if (fc.feature == c.feature)
-        contact_load_[c.particle].approach +=
-            e * approach_energy(fc.normal, p.v[c.particle] - w.kinematics.velocity_at(fc.point),
-                                p.mass[c.particle]);
-    const double f = loading.normal_force(h);
-    contact_load_[c.particle].force += f;
-    contact_load_[c.particle].largest = std::max(contact_load_[c.particle].largest, f);
+  // the wall contacts, grouped by particle: each thread takes a range that starts and ends at a
+  // particle's boundary, so every particle's loads are added by one thread in list order (the
+  // serial loop's sums, bit for bit)
+  const std::vector<WallContactRecord>& wc = sim.wall_contacts();
+  const std::size_t nw = wc.size();
+  const int nt = nw >= kParallelMin / 2 ? max_threads() : 1;
+#pragma omp parallel num_threads(nt)
+  {
+    const auto t = static_cast<std::size_t>(thread_id());
+    const auto nts = static_cast<std::size_t>(nt);
+    auto boundary = [&](std::size_t u) {  // the first contact of a particle at or after u nw/nt
+      std::size_t b = nw * u / nts;
+      while (b > 0 && b < nw && wc[b].particle == wc[b - 1].particle) ++b;
+      return b;
+    };
+    const std::size_t q0 = boundary(t), q1 = boundary(t + 1);
+    std::vector<WallContact> found;
+    for (std::size_t q = q0; q < q1; ++q) {
+      const WallContactRecord& c = wc[q];
+      const std::size_t a = p.material[c.particle], b = sim.walls[c.wall]->material;
+      const StateRef h = sim.wall_state().at(c.candidate);
+      const double e = share_[a * n_materials_ + b];
+      ContactLoad& load = contact_load_[c.particle];
+      load.work += e * loading.loading_work(h);
+      const Wall& w = *sim.walls[c.wall];
+      found.clear();
+      w.contacts(p.x[c.particle], p.radius[c.particle], 0.0, found);
+      for (const auto& fc : found)
+        if (fc.feature == c.feature)
+          load.approach +=
+              e * approach_energy(fc.normal, p.v[c.particle] - w.kinematics.velocity_at(fc.point),
+                                  p.mass[c.particle]);
+      const double f = loading.normal_force(h);
+      load.force += f;
+      load.largest = std::max(load.largest, f);
+    }
   }
 }
 

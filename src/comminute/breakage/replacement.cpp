@@ -109,8 +109,9 @@ void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
           ctx.ledger.remove(sim, u);
         }
     }
-    // The parents in the order they broke; each worked out on its own (all threads), then their
-    // fragments appended and their books kept in that order (serial).
+    // The parents in the order they broke; each worked out on its own (all threads), their
+    // fragments given slots and ids in that order and written (all threads), their books kept in
+    // that order (serial).
     std::vector<Outcome> outcomes;
     for (std::size_t b = 0; b < broken_ids_.size(); ++b) {
       const auto found_parent = slot_of.find(broken_ids_[b]);

@@ -4,6 +4,7 @@
 // twist and bending moments are incremental and turn with the bond. It fails in tension when
 // σ = F_n,tension/A + |M_s| R̄/I reaches σ̄_c and in shear when τ = |F_s|/A + |M_n| R̄/J reaches τ̄_c.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <utility>
@@ -242,13 +243,15 @@ BondStepSums ParallelBond::update_range(const BondStep& st, std::size_t begin,
   Batch t;
   BondStates& state = *st.state;
   BondLoadDelivery deliver(st);
+  std::array<const double*, 14> column_data;  // looked up once: not per prefetch
+  std::ranges::transform(std::as_const(state).columns(), column_data.begin(),
+                         [](const std::vector<double>* column) { return column->data(); });
   for (std::size_t b0 = begin; b0 < end; b0 += kBatch) {
     const std::size_t n = std::min(kBatch, end - b0);
     // the states of the next batch, one cache line of eight bonds at a time: many arrays are
     // streamed at once, more than the processor follows by itself
     for (std::size_t b = b0 + kBatch; b < std::min(b0 + 2 * kBatch, end); b += 8)
-      for (const std::vector<double>* column : std::as_const(state).columns())
-        __builtin_prefetch(column->data() + b);
+      for (const double* column : column_data) __builtin_prefetch(column + b);
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t b = b0 + k;
       if (b + kAhead < end) {  // the particles of a bond further on

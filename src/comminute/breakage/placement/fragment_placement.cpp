@@ -71,7 +71,7 @@ std::vector<Sphere> place_fragments(const Sphere& parent, const std::vector<doub
 }
 
 FragmentVelocities fragment_velocities(const Vec3& x_p, const Vec3& v_p, const Vec3& w_p,
-                                       double inertia_p, const std::vector<Vec3>& x,
+                                       double inertia_p, double mass_p, const std::vector<Vec3>& x,
                                        const std::vector<double>& m,
                                        const std::vector<double>& inertia, double released) {
   const std::size_t n = x.size();
@@ -84,7 +84,10 @@ FragmentVelocities fragment_velocities(const Vec3& x_p, const Vec3& v_p, const V
           m[i] * r * r.transpose();
     mt += m[i];
   }
-  const Eigen::Vector3d lp = inertia_p * Eigen::Vector3d(w_p.x, w_p.y, w_p.z);
+  // the fragments' share of the parent's angular momentum: that of the mass they carry (1e-12:
+  // a family holding the whole mass differs from m_p by rounding only)
+  const double share = mt < (1 - 1e-12) * mass_p ? mt / mass_p : 1.0;
+  const Eigen::Vector3d lp = share * inertia_p * Eigen::Vector3d(w_p.x, w_p.y, w_p.z);
   Vec3 w;
   if (lp.squaredNorm() > 0) {
     const Eigen::Vector3d we = jm.ldlt().solve(lp);

@@ -1,5 +1,6 @@
 // Fragment placement and velocities: shrunk start within the overlap bound, mass centre on the
-// parent centre, exact linear and angular momentum, released energy exactly as configured.
+// parent centre, rigid-body inheritance of the spin or exact linear and angular momentum, released
+// energy exactly as configured.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,6 +71,7 @@ TEST(Placement, WallBoundShrinksFragments) {
   }
 }
 
+// fragment_spin = "angular_momentum": linear and angular momentum kept to rounding.
 TEST(Placement, VelocitiesConserveMomentaAndAddReleasedEnergy) {
   Rng rng(5, rng_stream::placement);
   const double rho = 2700;
@@ -83,7 +85,8 @@ TEST(Placement, VelocitiesConserveMomentaAndAddReleasedEnergy) {
   const double ip = 0.4 * mp * parent.r * parent.r;
   const Vec3 vp{0.3, -1.2, 0.7}, wp{40, -25, 90};
   for (double released : {0.0, 1e-4}) {
-    auto fv = fragment_velocities(parent.x, vp, wp, ip, mp, x, f.m, f.inertia, released);
+    auto fv = fragment_velocities(parent.x, vp, wp, ip, mp, x, f.m, f.inertia, released,
+                                  FragmentSpin::angular_momentum);
     Vec3 p, l;
     double ke = 0, ke_rigid = 0;
     for (std::size_t i = 0; i < x.size(); ++i) {
@@ -99,7 +102,8 @@ TEST(Placement, VelocitiesConserveMomentaAndAddReleasedEnergy) {
     if (released == 0) {
       ke_rigid = ke;
     } else {
-      auto rigid = fragment_velocities(parent.x, vp, wp, ip, mp, x, f.m, f.inertia, 0.0);
+      auto rigid = fragment_velocities(parent.x, vp, wp, ip, mp, x, f.m, f.inertia, 0.0,
+                                       FragmentSpin::angular_momentum);
       for (std::size_t i = 0; i < x.size(); ++i)
         ke_rigid += 0.5 * f.m[i] * norm2(rigid.v[i]) + 0.5 * f.inertia[i] * norm2(rigid.w[i]);
       // The radial release is orthogonal to the rigid motion: KE rises by exactly `released`.
@@ -107,7 +111,8 @@ TEST(Placement, VelocitiesConserveMomentaAndAddReleasedEnergy) {
     }
   }
   // Without spin the fragments' kinetic energy equals the parent's exactly (no release).
-  auto fv = fragment_velocities(parent.x, vp, {}, ip, mp, x, f.m, f.inertia, 0.0);
+  auto fv = fragment_velocities(parent.x, vp, {}, ip, mp, x, f.m, f.inertia, 0.0,
+                                FragmentSpin::angular_momentum);
   double ke = 0;
   for (std::size_t i = 0; i < x.size(); ++i) ke += 0.5 * f.m[i] * norm2(fv.v[i]);
   EXPECT_NEAR(ke, 0.5 * mp * norm2(vp), 1e-14 * ke);
@@ -131,7 +136,8 @@ TEST(Placement, FinesBookedAsMassTakeTheirShareOfTheAngularMomentum) {
   const double mp = kept / 0.4;  // 60 % of the parent went to fines
   const double ip = 0.4 * mp * parent.r * parent.r;
   const Vec3 vp{0.3, -1.2, 0.7}, wp{400, -250, 900};
-  const auto fv = fragment_velocities(parent.x, vp, wp, ip, mp, x, f.m, f.inertia, 0.0);
+  const auto fv = fragment_velocities(parent.x, vp, wp, ip, mp, x, f.m, f.inertia, 0.0,
+                                      FragmentSpin::angular_momentum);
   Vec3 p, l;
   for (std::size_t i = 0; i < x.size(); ++i) {
     p += f.m[i] * fv.v[i];
@@ -141,9 +147,10 @@ TEST(Placement, FinesBookedAsMassTakeTheirShareOfTheAngularMomentum) {
   EXPECT_NEAR(norm(l - 0.4 * ip * wp), 0.0, 1e-12 * 0.4 * ip * norm(wp));
   // the whole mass, up to rounding: the parent's whole angular momentum, the same bits as m_p
   // given exactly
-  const auto whole = fragment_velocities(parent.x, vp, wp, ip, kept, x, f.m, f.inertia, 0.0);
-  const auto rounded =
-      fragment_velocities(parent.x, vp, wp, ip, kept * (1 + 1e-15), x, f.m, f.inertia, 0.0);
+  const auto whole = fragment_velocities(parent.x, vp, wp, ip, kept, x, f.m, f.inertia, 0.0,
+                                         FragmentSpin::angular_momentum);
+  const auto rounded = fragment_velocities(parent.x, vp, wp, ip, kept * (1 + 1e-15), x, f.m,
+                                           f.inertia, 0.0, FragmentSpin::angular_momentum);
   Vec3 lw;
   for (std::size_t i = 0; i < x.size(); ++i) {
     EXPECT_EQ(whole.v[i], rounded.v[i]);
@@ -151,4 +158,43 @@ TEST(Placement, FinesBookedAsMassTakeTheirShareOfTheAngularMomentum) {
     lw += f.m[i] * cross(x[i] - parent.x, whole.v[i]) + f.inertia[i] * whole.w[i];
   }
   EXPECT_NEAR(norm(lw - ip * wp), 0.0, 1e-12 * ip * norm(wp));
+}
+
+// fragment_spin = "parent" (the default): rigid-body inheritance, each fragment keeps the spin of
+// its parent and the velocity its material had at its centre, v_i = v_p + w_p x (x_i - x_p) (the
+// residual removal changes it by rounding only: 1e-15 relative). As the centres lie inside the
+// parent, no fragment moves faster than the parent's fastest point |v_p| + |w_p| r_p. Keeping the
+// angular momentum instead spins the family up by I_p / (J_orbit + sum I_i) (here 1.52).
+TEST(Placement, FragmentsKeepTheSpinAndVelocityOfTheirParentsMaterial) {
+  Rng rng(11, rng_stream::placement);
+  const double rho = 2700;
+  const Sphere parent{{0.01, -0.02, 0.05}, 0.002};
+  Family f;
+  for (double r : {0.0014, 0.0011, 0.0009}) {  // a coarse family: 3 fragments
+    f.r.push_back(r);
+    f.m.push_back(rho * units::sphere_volume(r));
+    f.inertia.push_back(0.4 * f.m.back() * r * r);
+  }
+  auto s = place_fragments(parent, f.r, f.m, {}, {}, PlacementOptions{}, rng);
+  std::vector<Vec3> x;
+  double mp = 0;
+  for (const auto& q : s) x.push_back(q.x);
+  for (double m : f.m) mp += m;
+  const double ip = 0.4 * mp * parent.r * parent.r;
+  const Vec3 vp{0.3, -1.2, 0.7}, wp{400, -250, 900};
+  const auto fv =
+      fragment_velocities(parent.x, vp, wp, ip, mp, x, f.m, f.inertia, 0.0, FragmentSpin::parent);
+  const double fastest_point = norm(vp) + norm(wp) * parent.r;
+  Vec3 p;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    EXPECT_EQ(fv.w[i], wp);
+    const Vec3 material = vp + cross(wp, x[i] - parent.x);
+    EXPECT_NEAR(norm(fv.v[i] - material), 0.0, 1e-15 * fastest_point);
+    EXPECT_LE(norm(fv.v[i]), fastest_point);
+    p += f.m[i] * fv.v[i];
+  }
+  EXPECT_NEAR(norm(p - mp * vp), 0.0, 1e-15 * mp * norm(vp));
+  const auto kept = fragment_velocities(parent.x, vp, wp, ip, mp, x, f.m, f.inertia, 0.0,
+                                        FragmentSpin::angular_momentum);
+  EXPECT_GT(norm(kept.w[0]), 1.2 * norm(wp));  // spun up (1.52x for this family)
 }

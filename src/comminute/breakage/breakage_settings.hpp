@@ -44,6 +44,7 @@ struct MaterialBreakage {
   double min_fragment_ratio = 0.05;  // fragments below this fraction of the parent diameter: fines
   FinesRule fines = FinesRule::particles;
   double release_fraction = 0;  // eta: fraction of the absorbed energy given as radial speed
+  FragmentSpin fragment_spin = FragmentSpin::parent;  // how fragments inherit the parent's spin
   ForceMeasure force_measure = ForceMeasure::largest_contact;  // the event's peak force
   SizingEnergy sizing_energy = SizingEnergy::stressing;        // E of the t10 relation
 };

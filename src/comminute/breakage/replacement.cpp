@@ -236,7 +236,7 @@ void Replacement::place(const Simulation& sim, const Context& ctx, Outcome& o) c
   const double inertial_mass = p.mass[parent];
   const double released = mat.release_fraction * o.rec.specific_energy * inertial_mass;
   o.vel = fragment_velocities(p.x[parent], p.v[parent], p.w[parent], p.inertia[parent],
-                              inertial_mass, xs, o.masses, o.inertia, released);
+                              inertial_mass, xs, o.masses, o.inertia, released, mat.fragment_spin);
   // Energy bookkeeping: kinetic energy of the parent out, of the fragments in.
   o.ke_out =
       0.5 * inertial_mass * norm2(p.v[parent]) + 0.5 * p.inertia[parent] * norm2(p.w[parent]);

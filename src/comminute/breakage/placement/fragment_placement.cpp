@@ -70,29 +70,40 @@ std::vector<Sphere> place_fragments(const Sphere& parent, const std::vector<doub
   return out;
 }
 
-FragmentVelocities fragment_velocities(const Vec3& x_p, const Vec3& v_p, const Vec3& w_p,
-                                       double inertia_p, double mass_p, const std::vector<Vec3>& x,
-                                       const std::vector<double>& m,
-                                       const std::vector<double>& inertia, double released) {
-  const std::size_t n = x.size();
+namespace {
+// The one spin w of the fragments that keeps their mass share of the parent's angular momentum:
+// (J_orbit + sum I_i) w = (sum m_i / m_p) I_p w_p about the parent's centre.
+Vec3 conserving_spin(const Vec3& x_p, const Vec3& w_p, double inertia_p, double mass_p,
+                     const std::vector<Vec3>& x, const std::vector<double>& m,
+                     const std::vector<double>& inertia, double mt) {
   // J = sum_i [I_i 1 + m_i (|r_i|^2 1 - r_i r_i^T)], r_i = x_i - x_p.
   Eigen::Matrix3d jm = Eigen::Matrix3d::Zero();
-  double mt = 0;
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < x.size(); ++i) {
     const Eigen::Vector3d r(x[i].x - x_p.x, x[i].y - x_p.y, x[i].z - x_p.z);
     jm += (inertia[i] + m[i] * r.squaredNorm()) * Eigen::Matrix3d::Identity() -
           m[i] * r * r.transpose();
-    mt += m[i];
   }
   // the fragments' share of the parent's angular momentum: that of the mass they carry (1e-12:
   // a family holding the whole mass differs from m_p by rounding only)
   const double share = mt < (1 - 1e-12) * mass_p ? mt / mass_p : 1.0;
   const Eigen::Vector3d lp = share * inertia_p * Eigen::Vector3d(w_p.x, w_p.y, w_p.z);
-  Vec3 w;
-  if (lp.squaredNorm() > 0) {
-    const Eigen::Vector3d we = jm.ldlt().solve(lp);
-    w = {we.x(), we.y(), we.z()};
-  }
+  if (lp.squaredNorm() == 0) return {};
+  const Eigen::Vector3d we = jm.ldlt().solve(lp);
+  return {we.x(), we.y(), we.z()};
+}
+}  // namespace
+
+FragmentVelocities fragment_velocities(const Vec3& x_p, const Vec3& v_p, const Vec3& w_p,
+                                       double inertia_p, double mass_p, const std::vector<Vec3>& x,
+                                       const std::vector<double>& m,
+                                       const std::vector<double>& inertia, double released,
+                                       FragmentSpin spin) {
+  const std::size_t n = x.size();
+  double mt = 0;
+  for (double mi : m) mt += mi;
+  Vec3 w = w_p;
+  if (spin == FragmentSpin::angular_momentum)
+    w = conserving_spin(x_p, w_p, inertia_p, mass_p, x, m, inertia, mt);
   // Radial release along the unit directions n_i from the parent centre, minus their mass mean
   // <n> so that sum m_i dv_i = 0: dv_i = c (n_i - <n>), kinetic energy c^2 M (1 - |<n>|^2) / 2.
   // c is set for exactly `released`, but the directional spread 1 - |<n>|^2 is taken as at least

@@ -53,21 +53,33 @@ struct FragmentVelocities {
   std::vector<Vec3> v, w;  // m/s, rad/s
 };
 
-// Velocities of fragments (centres x_i relative to the parent's centre, masses m_i, moments of
-// inertia I_i about their own centres) replacing a parent with velocity v_p, spin w_p and moment
-// of inertia I_p and mass m_p: rigid-body motion v_i = v_p + w x (x_i - x_p), w_i = w, where w
-// solves (J_orbit + sum I_i) w = (sum m_i / m_p) I_p w_p, so that the fragments keep exactly the
-// parent's angular momentum when they carry all its mass, and the share of it that goes with their
-// mass when fines booked as mass take the rest (as those take their share of the linear momentum;
-// without that share a family that kept a third of the mass would spin three times as fast, with
-// energy from nowhere); the share is 1 when sum m_i is m_p up to rounding. Plus an optional
-// radial release dv_i = c (n_i - <n>) (n_i unit direction from the parent centre, <n> its mass
-// mean) with sum m_i dv_i = 0 and sum m_i |dv_i|^2 / 2 = released (J) — or less when one
-// off-centre fragment dominates the family (see the .cpp: speeds stay below 2 sqrt(8 released/M)).
-// Linear momentum sum m_i v_i = (sum m_i) v_p holds to rounding (the residual is removed).
+// How fragments inherit their parent's spin (docs/breakage.md, "Velocities").
+enum class FragmentSpin {
+  parent,           // rigid-body inheritance: w_i = w_p, v_i = v_p + w_p x (x_i - x_p)
+  angular_momentum  // one w for all, keeping the parent's angular momentum (or its mass share)
+};
+
+// Velocities of fragments (centres x_i, masses m_i, moments of inertia I_i about their own
+// centres) replacing a parent at x_p with velocity v_p, spin w_p, moment of inertia I_p and mass
+// m_p: rigid-body motion v_i = v_p + w x (x_i - x_p), w_i = w, where
+// - FragmentSpin::parent: w = w_p, each fragment keeps the velocity its material had in the parent
+//   at the instant of fracture (no speed from nowhere; the angular momentum changes by
+//   (J_orbit + sum I_i - I_p) w_p as the packed spheres' inertia differs from the parent's);
+// - FragmentSpin::angular_momentum: w solves (J_orbit + sum I_i) w = (sum m_i / m_p) I_p w_p, so
+//   that the fragments keep exactly the parent's angular momentum when they carry all its mass,
+//   and the share of it that goes with their mass when fines booked as mass take the rest (as
+//   those take their share of the linear momentum; without that share a family that kept a third
+//   of the mass would spin three times as fast); the share is 1 when sum m_i is m_p up to
+//   rounding. The fragments spin up by I_p / (J_orbit + sum I_i) (1.5 for three fragments).
+// Plus an optional radial release dv_i = c (n_i - <n>) (n_i unit direction from the parent
+// centre, <n> its mass mean) with sum m_i dv_i = 0 and sum m_i |dv_i|^2 / 2 = released (J) — or
+// less when one off-centre fragment dominates the family (see the .cpp: speeds stay below
+// 2 sqrt(8 released/M)). Linear momentum sum m_i v_i = (sum m_i) v_p holds to rounding (the
+// residual is removed).
 FragmentVelocities fragment_velocities(const Vec3& x_p, const Vec3& v_p, const Vec3& w_p,
                                        double inertia_p, double mass_p, const std::vector<Vec3>& x,
                                        const std::vector<double>& m,
-                                       const std::vector<double>& inertia, double released);
+                                       const std::vector<double>& inertia, double released,
+                                       FragmentSpin spin);
 
 }  // namespace comminute::breakage

@@ -23,6 +23,9 @@ breakage::MaterialBreakage read_material(const CaseTable& b, const Material& mat
                 ? breakage::FinesRule::mass
                 : breakage::FinesRule::particles;
   m.release_fraction = b.number("release_fraction", Limits::unit_interval(), 0.0);
+  m.fragment_spin = b.choice("fragment_spin", {"parent", "angular_momentum"}, "parent") == "parent"
+                        ? breakage::FragmentSpin::parent
+                        : breakage::FragmentSpin::angular_momentum;
   m.force_measure = b.choice("force_measure", {"largest_contact", "contact_sum"},
                              "largest_contact") == "largest_contact"
                         ? breakage::ForceMeasure::largest_contact

@@ -71,7 +71,8 @@ TEST(Placement, WallBoundShrinksFragments) {
   }
 }
 
-// fragment_spin = "angular_momentum": linear and angular momentum kept to rounding.
+// fragment_spin = "angular_momentum": linear and angular momentum kept to rounding; the release
+// adds exactly the energy set, with either spin rule.
 TEST(Placement, VelocitiesConserveMomentaAndAddReleasedEnergy) {
   Rng rng(5, rng_stream::placement);
   const double rho = 2700;
@@ -116,6 +117,23 @@ TEST(Placement, VelocitiesConserveMomentaAndAddReleasedEnergy) {
   double ke = 0;
   for (std::size_t i = 0; i < x.size(); ++i) ke += 0.5 * f.m[i] * norm2(fv.v[i]);
   EXPECT_NEAR(ke, 0.5 * mp * norm2(vp), 1e-14 * ke);
+  // With the default fragment_spin = "parent" the release adds exactly `released` too: it is
+  // orthogonal to every rigid motion about the fragments' mass centre (n_i is along r_i, and
+  // sum m_i r_i = 0), and the linear momentum stays exact.
+  const double released = 1e-4;
+  const auto rigid =
+      fragment_velocities(parent.x, vp, wp, ip, mp, x, f.m, f.inertia, 0.0, FragmentSpin::parent);
+  const auto pushed = fragment_velocities(parent.x, vp, wp, ip, mp, x, f.m, f.inertia, released,
+                                          FragmentSpin::parent);
+  double ke_rigid = 0, ke_pushed = 0;
+  Vec3 p;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    ke_rigid += 0.5 * f.m[i] * norm2(rigid.v[i]) + 0.5 * f.inertia[i] * norm2(rigid.w[i]);
+    ke_pushed += 0.5 * f.m[i] * norm2(pushed.v[i]) + 0.5 * f.inertia[i] * norm2(pushed.w[i]);
+    p += f.m[i] * pushed.v[i];
+  }
+  EXPECT_NEAR(ke_pushed - ke_rigid, released, 1e-12 * ke_pushed);
+  EXPECT_NEAR(norm(p - mp * vp), 0.0, 1e-15 * mp * norm(vp));
 }
 
 // Fines booked as mass take their share of the parent's angular momentum, as they take their share

@@ -7,15 +7,26 @@
 
 namespace comminute {
 
+namespace {
+// 0 when every component of `a` is finite, else NaN (inf - inf and NaN - NaN are NaN): summed over
+// the particles without a branch per component.
+inline double finite_probe(const Vec3& a) {
+  return (a.x - a.x) + (a.y - a.y) + (a.z - a.z);
+}
+}  // namespace
+
 VelocityVerlet::Drift VelocityVerlet::kick_drift(ParticleStore& p, double dt, const Vec3& gravity,
-                                                 const std::vector<Vec3>& x_build) {
+                                                 const std::vector<Vec3>* x_build) {
   const std::size_t n = p.owned();
   // (the build positions also hold the ghosts of a periodic run, after the owned particles)
-  const bool track = x_build.size() >= n;
+  const bool track = x_build != nullptr && x_build->size() >= n;
+  const Vec3* xb = track ? x_build->data() : nullptr;
   const double h = 0.5 * dt;
   const Vec3 g = gravity;
   double worst = 0, step = 0;
-#pragma omp parallel for schedule(static) reduction(max : worst, step) if (n >= kParallelMin)
+  double probe = 0;  // stays exactly 0 while every position is finite, in any summation order
+#pragma omp parallel for schedule(static) reduction(max : worst, step) reduction(+ : probe) \
+    if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     if (!(p.flags[i] & pflag::fixed)) {
       p.v[i] += (h / p.mass[i]) * p.f[i];
@@ -26,30 +37,25 @@ VelocityVerlet::Drift VelocityVerlet::kick_drift(ParticleStore& p, double dt, co
     }
     p.f[i] = p.mass[i] * g;
     p.t[i] = {};
-    if (track) worst = std::max(worst, norm2(p.x[i] - x_build[i]));
+    probe += finite_probe(p.x[i]);
+    if (track) worst = std::max(worst, norm2(p.x[i] - xb[i]));
   }
-  return {track ? worst : std::numeric_limits<double>::infinity(), step};
+  const double from_build2 =
+      track ? worst : (x_build ? std::numeric_limits<double>::infinity() : 0.0);
+  return {from_build2, step, probe == 0};
 }
-
-namespace {
-// 0 when every component of `a` is finite, else NaN (inf - inf and NaN - NaN are NaN): summed over
-// the particles without a branch per component.
-inline double finite_probe(const Vec3& a) {
-  return (a.x - a.x) + (a.y - a.y) + (a.z - a.z);
-}
-}  // namespace
 
 bool VelocityVerlet::kick(ParticleStore& p, double dt) {
   const std::size_t n = p.owned();
   const double h = 0.5 * dt;
-  double probe = 0;  // stays exactly 0 while every state is finite, in any summation order
+  double probe = 0;  // stays exactly 0 while every velocity is finite, in any summation order
 #pragma omp parallel for schedule(static) reduction(+ : probe) if (n >= kParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     if (!(p.flags[i] & pflag::fixed)) {
       p.v[i] += (h / p.mass[i]) * p.f[i];
       p.w[i] += (h / p.inertia[i]) * p.t[i];
     }
-    probe += finite_probe(p.x[i]) + finite_probe(p.v[i]) + finite_probe(p.w[i]);
+    probe += finite_probe(p.v[i]) + finite_probe(p.w[i]);
   }
   return !(probe == 0);
 }

@@ -10,18 +10,20 @@ namespace comminute {
 
 class VelocityVerlet {
  public:
-  // What a drift moved: the largest |x - x_build|^2 when `x_build` holds a position per owned
-  // particle, else infinity (the caller then rebuilds), and the largest squared displacement of
-  // this drift (m2).
+  // What a drift moved: the largest |x - x_build|^2 when `x_build` is given (infinity when it
+  // does not hold a position per owned particle: the caller then rebuilds; 0 when not given), the
+  // largest squared displacement of this drift (m2), and whether every position is finite.
   struct Drift {
     double from_build2 = 0;
     double step2 = 0;
+    bool finite = true;
   };
   // First half kick and drift of every free owned particle (ghosts follow their owners), and the
   // start of the force sum (gravity, zero torque) in the same pass.
   static Drift kick_drift(ParticleStore& p, double dt, const Vec3& gravity,
-                          const std::vector<Vec3>& x_build);
-  // Second half kick of the owned particles; true when some particle's state became non-finite.
+                          const std::vector<Vec3>* x_build);
+  // Second half kick of the owned particles; true when some particle's velocity became
+  // non-finite (the drift checks the positions).
   static bool kick(ParticleStore& p, double dt);
   // Sets every owned particle's force to its weight and its torque to zero.
   static void start_forces(ParticleStore& p, const Vec3& gravity);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <unordered_map>
 
@@ -46,9 +47,37 @@ bool PairTracker::due(const ParticleStore& p, const SimulationOptions& options) 
   return stale_;
 }
 
-void PairTracker::moved(double max_displacement2, double step2) {
-  max_disp2_ = max_displacement2;
-  prune_travel_ += std::sqrt(step2);
+void PairTracker::moved(const ParticleStore& p, double from_build2, double step2, double skin) {
+  const double step = std::sqrt(step2);
+  prune_travel_ += step;
+  if (exact_drift_) {
+    max_disp2_ = from_build2;
+    return;
+  }
+  // every particle moved at most travel_bound_ from its build position: below skin/2 (with room
+  // for round-off) due() decides from the bound as from the exact value
+  ++steps_since_measure_;
+  travel_bound_ += step;
+  if (travel_bound_ <= (1 - 1e-9) * 0.5 * skin && x_at_build_.size() >= p.owned()) {
+    max_disp2_ = travel_bound_ * travel_bound_;
+    return;
+  }
+  max_disp2_ = largest_displacement2(p);
+  travel_bound_ = std::sqrt(max_disp2_);
+  if (steps_since_measure_ < kMeasureAgain) exact_drift_ = true;
+  steps_since_measure_ = 0;
+}
+
+double PairTracker::largest_displacement2(const ParticleStore& p) const {
+  const auto n = static_cast<std::ptrdiff_t>(p.owned());
+  if (x_at_build_.size() < p.owned()) return std::numeric_limits<double>::infinity();
+  double worst = 0;  // (a max: exact, so the same on any number of threads)
+#pragma omp parallel for schedule(static) reduction(max : worst) if (n >= 16384)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    worst = std::max(worst, norm2(p.x[k] - x_at_build_[k]));
+  }
+  return worst;
 }
 
 const PrunedPairs* PairTracker::near_pairs(const ParticleStore& p, const SimulationOptions& options,
@@ -127,6 +156,9 @@ void PairTracker::rebuild(ParticleStore& p, const Walls& walls, SimulationOption
     if (p.flags[i] & pflag::growing) reach_tracked_.push_back(static_cast<std::uint32_t>(i));
   walls_.build(p, walls, options.skin, wall_state);
   stale_ = false;
+  travel_bound_ = 0;
+  exact_drift_ = false;
+  steps_since_measure_ = 0;
   near_valid_ = false;
   prune_paused_ = false;
   ++rebuilds_;
@@ -284,6 +316,9 @@ void PairTracker::save(Archive& a) const {
   a.put_value("sim/rebuilds", rebuilds_);
   a.put_value("sim/appended_since_sort", appended_since_sort_);
   a.put_value("sim/max_disp2", max_disp2_);
+  a.put_value("sim/travel_bound", travel_bound_);
+  a.put_value("sim/exact_drift", static_cast<std::uint8_t>(exact_drift_));
+  a.put_value("sim/steps_since_measure", steps_since_measure_);
   a.put_value("sim/need_rebuild", static_cast<std::uint8_t>(stale_));
 }
 
@@ -335,6 +370,14 @@ void PairTracker::load(const Archive& a, const ParticleStore& p, double skin,
     if (s >= n_build) corrupt("pairs/reach_tracked", fmt::format("slot {} is out of range", s));
   const double disp2 = a.get_value<double>("sim/max_disp2");
   if (!std::isfinite(disp2) || disp2 < 0) corrupt("sim/max_disp2", "is not a finite distance");
+  // (absent in checkpoints written before the bound existed: their drifts measured every step)
+  const bool has_bound = a.has("sim/travel_bound");
+  const double travel_bound = has_bound ? a.get_value<double>("sim/travel_bound") : 0.0;
+  if (!std::isfinite(travel_bound) || travel_bound < 0)
+    corrupt("sim/travel_bound", "is not a finite distance");
+  const bool exact_drift = !has_bound || a.get_value<std::uint8_t>("sim/exact_drift") != 0;
+  const std::uint64_t steps_since_measure =
+      has_bound ? a.get_value<std::uint64_t>("sim/steps_since_measure") : 0;
   walls_.load(a, n_build);  // (checks its entries before it changes anything)
   nlist_.restore(std::move(first), std::move(second), std::move(ids), std::move(large),
                  std::move(labels));
@@ -348,6 +391,9 @@ void PairTracker::load(const Archive& a, const ParticleStore& p, double skin,
   appended_since_sort_ =
       a.has("sim/appended_since_sort") ? a.get_value<std::uint64_t>("sim/appended_since_sort") : 0;
   max_disp2_ = disp2;
+  exact_drift_ = exact_drift;
+  travel_bound_ = travel_bound;
+  steps_since_measure_ = steps_since_measure;
   stale_ = stale;
   near_valid_ = false;  // pruned again at the next step: the same pairs touch, so the same bits
 }

@@ -42,11 +42,16 @@ class PairTracker {
   // The lists must be rebuilt before the next force computation.
   void invalidate() { stale_ = true; }
   bool stale() const { return stale_; }
-  // Positions at the last build, one per particle while the lists are current.
-  const std::vector<Vec3>& build_positions() const { return x_at_build_; }
-  // After a drift: the largest squared displacement since the build and the largest squared
-  // displacement of this drift (m2), and the distance wall k moved this step (m).
-  void moved(double max_displacement2, double step2);
+  // The positions the drift is to measure each particle's displacement from (those at the last
+  // build, one per particle while the lists are current), or nullptr while the drifts' summed
+  // steps bound every displacement well enough that moved() need not be told it.
+  const std::vector<Vec3>* displacement_reference() const {
+    return exact_drift_ ? &x_at_build_ : nullptr;
+  }
+  // After a drift: the largest squared displacement since the build when the drift measured it
+  // (displacement_reference() was given), the largest squared displacement of this drift (m2) and
+  // the skin (m); and the distance wall k moved this step (m).
+  void moved(const ParticleStore& p, double from_build2, double step2, double skin);
   void wall_moved(std::size_t k, double distance) { walls_.moved(k, distance); }
   // Whether the lists must be rebuilt before the next force computation: they are stale or some
   // reach changed by more than skin/2 (marks them stale).
@@ -136,7 +141,18 @@ class PairTracker {
   bool stale_ = true;
   std::uint64_t rebuilds_ = 0;
   std::uint64_t appended_since_sort_ = 0;  // fragments appended since the last sort
+  // The largest |x - x_build|^2 (m2), or the square of a bound on it below (skin/2)^2, which
+  // decides due() as the exact value would. The bound: the largest displacement last measured
+  // plus the drifts' largest steps since (m), while the drifts do not measure it themselves
+  // (exact_drift_: from a second measure within kMeasureAgain steps of the last until the next
+  // build; a drift's measure reads the build positions, a pass of its own reads them and the
+  // positions, so the bound spares that read on most steps of a bed that moves slowly).
   double max_disp2_ = 0;
+  double travel_bound_ = 0;
+  bool exact_drift_ = true;
+  std::uint64_t steps_since_measure_ = 0;
+  static constexpr std::uint64_t kMeasureAgain = 4;
+  double largest_displacement2(const ParticleStore& p) const;
   // The pruned list: valid until a rebuild or an in-place update; the sum of the drifts' largest
   // displacements since it was made (m, bounds every particle's); the steps since; whether pruning
   // waits for the next rebuild (it had to prune again too soon to pay, or particles were replaced)

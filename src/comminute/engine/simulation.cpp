@@ -47,8 +47,9 @@ void Simulation::run(std::uint64_t n) {
 void Simulation::step() {
   if (!is_setup_) setup();
   if (step_control) dt = step_control->decide(particles, materials);
-  const auto drift = VelocityVerlet::kick_drift(particles, dt, gravity, tracker_.build_positions());
-  tracker_.moved(drift.from_build2, drift.step2);
+  const auto drift =
+      VelocityVerlet::kick_drift(particles, dt, gravity, tracker_.displacement_reference());
+  tracker_.moved(particles, drift.from_build2, drift.step2, options.skin);
   forces_cleared_ = true;
   for (std::size_t k = 0; k < walls.size(); ++k) {
     walls[k]->advance(dt);
@@ -60,7 +61,7 @@ void Simulation::step() {
   for (auto& m : modules) m->post_force(*this);
   if (ContactStress* cs = contacts_.stress()) cs->disarm();
   particles.drop_ghosts();
-  const bool bad = VelocityVerlet::kick(particles, dt);
+  const bool bad = VelocityVerlet::kick(particles, dt) || !drift.finite;
   ++step_count;
   if (bad) report_non_finite();
   for (auto& m : modules) m->end_of_step(*this);

@@ -58,77 +58,69 @@ Timing check_rebuilds(Simulation& sim, int steps) {
   return timing;
 }
 
-// A compressed lattice of 8^3 spheres (spacing 1.9 r: every neighbour overlaps) in an open-top box:
-// it springs apart, and the small skin gives a rebuild every few steps.
-std::unique_ptr<Simulation> expanding_bed() {
+// nx^3 spheres of radius r_min..1 mm on a cubic lattice of spacing `a` (lifted by `lift`) in an
+// open-top box, with the given skin and time step.
+struct Lattice {
+  int nx;
+  double a, lift, r_min, skin, dt;
+  std::uint64_t seed;
+};
+std::unique_ptr<Simulation> lattice_bed(const Lattice& l) {
   auto sim = make_simulation(frictional_rolling_setup());
-  const double r = 0.001, a = 1.9 * r;
-  const int nx = 8;
-  Rng rng(5);
-  for (int k = 0; k < nx * nx * nx; ++k) {
-    const int i = k % nx, j = (k / nx) % nx, l = k / (nx * nx);
-    add_sphere(*sim, {(i + 0.5) * a + 0.05 * r, (j + 0.5) * a + 0.05 * r, (l + 0.5) * a + 0.05 * r},
-               r * rng.uniform(0.95, 1.0));
+  Rng rng(l.seed);
+  for (int k = 0; k < l.nx * l.nx * l.nx; ++k) {
+    const int i = k % l.nx, j = (k / l.nx) % l.nx, h = k / (l.nx * l.nx);
+    add_sphere(*sim, {(i + 0.5) * l.a + l.lift, (j + 0.5) * l.a + l.lift, (h + 0.5) * l.a + l.lift},
+               rng.uniform(l.r_min, 0.001));
   }
-  add_open_top_box(*sim, Vec3{0, 0, 0}, Vec3{nx * a + 0.1 * r, nx * a + 0.1 * r, 1.0});
-  sim->options.skin = 0.02 * r;
-  sim->dt = 2e-6;
+  const double side = l.nx * l.a + 2 * l.lift;
+  add_open_top_box(*sim, Vec3{0, 0, 0}, Vec3{side, side, 1.0});
+  sim->options.skin = l.skin;
+  sim->dt = l.dt;
   sim->setup();
   return sim;
 }
 
-// 1000 spheres at rest on a loose grid falling onto the floor of a box: at first every particle
-// moves alike (the bound is nearly exact), then the bed's collisions jiggle them (it is not).
+// A compressed lattice of 8^3 spheres (spacing 1.9 mm: every neighbour overlaps): it springs
+// apart, and the small skin (0.02 mm) gives a rebuild every few steps.
+std::unique_ptr<Simulation> expanding_bed() {
+  return lattice_bed({8, 0.0019, 0.00005, 0.00095, 0.00002, 2e-6, 5});
+}
+
+// 1000 spheres at rest on a loose lattice (spacing 2.2 mm) falling onto the floor of a box: at
+// first every particle moves alike (the bound is nearly exact), then the bed's collisions jiggle
+// them (it is not).
 std::unique_ptr<Simulation> falling_bed() {
-  auto sim = make_simulation(frictional_rolling_setup());
-  const double r = 0.001, a = 2.2 * r;
-  const int nx = 10;
-  Rng rng(9);
-  for (int k = 0; k < nx * nx * nx; ++k) {
-    const int i = k % nx, j = (k / nx) % nx, l = k / (nx * nx);
-    add_sphere(*sim, {(i + 0.5) * a, (j + 0.5) * a, (l + 0.5) * a + 0.1 * r},
-               r * rng.uniform(0.9, 1.0));
+  return lattice_bed({10, 0.0022, 0.0001, 0.0009, 0.0002, 1e-5, 9});
+}
+
+// The timing of a bed's rebuilds on one thread, after checking that two threads rebuild at the
+// same steps.
+template <class Bed>
+Timing on_one_and_two_threads(Bed&& bed, int steps) {
+  const int saved = omp_get_max_threads();
+  std::vector<Timing> t;
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    auto sim = bed();
+    t.push_back(check_rebuilds(*sim, steps));
   }
-  add_open_top_box(*sim, Vec3{0, 0, 0}, Vec3{nx * a, nx * a, 1.0});
-  sim->options.skin = 0.2 * r;
-  sim->dt = 1e-5;
-  sim->setup();
-  return sim;
+  omp_set_num_threads(saved);
+  EXPECT_EQ(t[1].rebuild_steps, t[0].rebuild_steps);
+  return t[0];
 }
 
 }  // namespace
 
 TEST(RebuildTiming, AnExpandingBedIsRebuiltExactlyWhenAParticleMovedHalfTheSkin) {
-  const int saved = omp_get_max_threads();
-  std::vector<std::uint64_t> steps_on_one;
-  for (int threads : {1, 2}) {
-    omp_set_num_threads(threads);
-    auto sim = expanding_bed();
-    const Timing t = check_rebuilds(*sim, 300);
-    // the test sees what it claims: many rebuilds, a few steps apart
-    EXPECT_GE(t.rebuilds, 20u);
-    if (threads == 1)
-      steps_on_one = t.rebuild_steps;
-    else
-      EXPECT_EQ(t.rebuild_steps, steps_on_one);  // the same decisions on any thread count
-  }
-  omp_set_num_threads(saved);
+  const Timing t = on_one_and_two_threads(expanding_bed, 300);
+  // the test sees what it claims: many rebuilds, a few steps apart
+  EXPECT_GE(t.rebuilds, 20u);
 }
 
 TEST(RebuildTiming, AFallingBedIsRebuiltExactlyWhenAParticleMovedHalfTheSkin) {
-  const int saved = omp_get_max_threads();
-  std::vector<std::uint64_t> steps_on_one;
-  for (int threads : {1, 2}) {
-    omp_set_num_threads(threads);
-    auto sim = falling_bed();
-    const Timing t = check_rebuilds(*sim, 3000);
-    // rebuilds both tens of steps apart (decided by the bound in between) and in the settling bed
-    EXPECT_GE(t.rebuilds, 5u);
-    EXPECT_GE(t.longest_gap, 30u);
-    if (threads == 1)
-      steps_on_one = t.rebuild_steps;
-    else
-      EXPECT_EQ(t.rebuild_steps, steps_on_one);
-  }
-  omp_set_num_threads(saved);
+  const Timing t = on_one_and_two_threads(falling_bed, 3000);
+  // rebuilds both tens of steps apart (decided by the bound in between) and in the settling bed
+  EXPECT_GE(t.rebuilds, 5u);
+  EXPECT_GE(t.longest_gap, 30u);
 }

@@ -112,6 +112,8 @@ std::vector<Crafted> crafted_checkpoints() {
       {"NaN time step", [nan](Archive& a) { a.put_value("sim/dt", nan); }},
       {"infinite time", [inf](Archive& a) { a.put_value("sim/time", inf); }},
       {"negative skin", [](Archive& a) { a.put_value("sim/skin", -1.0); }},
+      {"NaN displacement bound", [nan](Archive& a) { a.put_value("sim/travel_bound", nan); }},
+      {"negative displacement bound", [](Archive& a) { a.put_value("sim/travel_bound", -1.0); }},
       {"missing entry", [](Archive& a) { a.entries().erase("pairs/ids"); }},
   };
 }

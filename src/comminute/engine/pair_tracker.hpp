@@ -144,9 +144,9 @@ class PairTracker {
   // The largest |x - x_build|^2 (m2), or the square of a bound on it below (skin/2)^2, which
   // decides due() as the exact value would. The bound: the largest displacement last measured
   // plus the drifts' largest steps since (m), while the drifts do not measure it themselves
-  // (exact_drift_: from a second measure within kMeasureAgain steps of the last until the next
-  // build; a drift's measure reads the build positions, a pass of its own reads them and the
-  // positions, so the bound spares that read on most steps of a bed that moves slowly).
+  // (exact_drift_: from a measure within kMeasureAgain steps of the last measure or the build,
+  // until the next build; a drift's measure reads the build positions, a pass of its own reads them
+  // and the positions, so the bound spares that read on most steps of a bed that moves slowly).
   double max_disp2_ = 0;
   double travel_bound_ = 0;
   bool exact_drift_ = true;

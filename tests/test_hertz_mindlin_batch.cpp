@@ -83,63 +83,67 @@ TEST(HertzMindlinBatch, StagedBatchEqualsContactByContact) {
       {"tangential = \"mindlin_rescale_force\"\n", false},
       {"tangential = \"mindlin_rescale_force\"\ntangential_damping = false\n", true},
   };
-  for (const auto& [keys, dynamic] : variants) {
-    Twin t(keys, dynamic);
-    std::mt19937_64 rng(20261201);
-    std::vector<const PairParameters*> params(n_contacts);
-    std::vector<std::size_t> index(n_contacts);
-    for (std::size_t c = 0; c < n_contacts; ++c) {
-      params[c] = &t.materials.pair(c % 3 == 0 ? 0 : 1, c % 2 == 0 ? 0 : 1);
-      index[c] = n_contacts - 1 - c;  // the batch's contacts in another order than the store's
-    }
-    const SlotId spring = t.batch.vec3_slot("tangential_spring");
-    for (int step = 0; step < 4; ++step) {
-      std::vector<ContactKinematics> k = contacts(rng);
-      if (step == 1) {  // contact 5: its spring along the new normal
-        const Vec3 along = 1e-7 * k[5].normal;
-        t.batch.at(index[5]).vec3(spring) = along;
-        t.single.at(index[5]).vec3(spring) = along;
-      }
-      std::vector<ContactForces> fb(n_contacts), fs(n_contacts);
-      t.law->compute_batch(ContactBatch{n_contacts, k.data(), params.data(), index.data(),
-                                        &t.batch.slots(), fb.data()});
-      for (std::size_t c = 0; c < n_contacts; ++c)
-        t.law->compute(k[c], *params[c], t.single.at(index[c]), fs[c]);
-      std::size_t limited = 0;
+  // mixed material pairs, and one pair for all (the batch then spreads its parameters)
+  for (const bool one_pair : {false, true})
+    for (const auto& [keys, dynamic] : variants) {
+      Twin t(keys, dynamic);
+      const std::string label = keys + (one_pair ? "(one material pair) " : "");
+      std::mt19937_64 rng(20261201);
+      std::vector<const PairParameters*> params(n_contacts);
+      std::vector<std::size_t> index(n_contacts);
       for (std::size_t c = 0; c < n_contacts; ++c) {
-        const std::string where =
-            keys + " step " + std::to_string(step) + " contact " + std::to_string(c);
-        EXPECT_EQ(fb[c].normal_force, fs[c].normal_force) << where;
-        EXPECT_EQ(fb[c].elastic_normal_force, fs[c].elastic_normal_force) << where;
-        EXPECT_EQ(fb[c].tangential_force, fs[c].tangential_force) << where;
-        EXPECT_EQ(fb[c].stored_energy, fs[c].stored_energy) << where;
-        EXPECT_EQ(fb[c].normal_elastic_energy, fs[c].normal_elastic_energy) << where;
-        // the law's energy alone (breakage's bookkeeping) gives compute()'s bits
-        EXPECT_EQ(t.law->normal_elastic_energy(*params[c], k[c].effective_radius, k[c].overlap),
-                  fs[c].normal_elastic_energy)
-            << where;
-        EXPECT_EQ(fb[c].damping_dissipation, fs[c].damping_dissipation) << where;
-        EXPECT_EQ(fb[c].friction_dissipation, fs[c].friction_dissipation) << where;
-        const double mu_d = params[c]->dynamic_friction;
-        limited += norm(fb[c].tangential_force) > 0.999 * mu_d * std::abs(fb[c].normal_force);
+        params[c] = one_pair ? &t.materials.pair(1, 1)
+                             : &t.materials.pair(c % 3 == 0 ? 0 : 1, c % 2 == 0 ? 0 : 1);
+        index[c] = n_contacts - 1 - c;  // the batch's contacts in another order than the store's
       }
-      // the stores, every declared slot (spring, and the flag and stiffness where declared)
-      const Slots &sb = t.batch.slots(), &ss = t.single.slots();
-      for (std::size_t s = 0; s < Slots::max_slots; ++s)
-        for (std::size_t k2 = 0; k2 < n_contacts; ++k2) {
-          if (sb.vec3[s]) {
-            EXPECT_EQ(sb.vec3[s][k2], ss.vec3[s][k2]) << keys << " vec3 " << s;
-          }
-          if (sb.f32[s]) {
-            EXPECT_EQ(sb.f32[s][k2], ss.f32[s][k2]) << keys << " f32 " << s;
-          }
-          if (sb.f64[s]) {
-            EXPECT_EQ(sb.f64[s][k2], ss.f64[s][k2]) << keys << " f64 " << s;
-          }
+      const SlotId spring = t.batch.vec3_slot("tangential_spring");
+      for (int step = 0; step < 4; ++step) {
+        std::vector<ContactKinematics> k = contacts(rng);
+        if (step == 1) {  // contact 5: its spring along the new normal
+          const Vec3 along = 1e-7 * k[5].normal;
+          t.batch.at(index[5]).vec3(spring) = along;
+          t.single.at(index[5]).vec3(spring) = along;
         }
-      // the set covers both branches of the friction law: at the Coulomb limit and below it
-      EXPECT_GT(limited, 0u) << keys << " step " << step;
-      EXPECT_LT(limited, n_contacts) << keys << " step " << step;
+        std::vector<ContactForces> fb(n_contacts), fs(n_contacts);
+        t.law->compute_batch(ContactBatch{n_contacts, k.data(), params.data(), index.data(),
+                                          &t.batch.slots(), fb.data()});
+        for (std::size_t c = 0; c < n_contacts; ++c)
+          t.law->compute(k[c], *params[c], t.single.at(index[c]), fs[c]);
+        std::size_t limited = 0;
+        for (std::size_t c = 0; c < n_contacts; ++c) {
+          const std::string where =
+              label + " step " + std::to_string(step) + " contact " + std::to_string(c);
+          EXPECT_EQ(fb[c].normal_force, fs[c].normal_force) << where;
+          EXPECT_EQ(fb[c].elastic_normal_force, fs[c].elastic_normal_force) << where;
+          EXPECT_EQ(fb[c].tangential_force, fs[c].tangential_force) << where;
+          EXPECT_EQ(fb[c].stored_energy, fs[c].stored_energy) << where;
+          EXPECT_EQ(fb[c].normal_elastic_energy, fs[c].normal_elastic_energy) << where;
+          // the law's energy alone (breakage's bookkeeping) gives compute()'s bits
+          EXPECT_EQ(t.law->normal_elastic_energy(*params[c], k[c].effective_radius, k[c].overlap),
+                    fs[c].normal_elastic_energy)
+              << where;
+          EXPECT_EQ(fb[c].damping_dissipation, fs[c].damping_dissipation) << where;
+          EXPECT_EQ(fb[c].friction_dissipation, fs[c].friction_dissipation) << where;
+          const double mu_d = params[c]->dynamic_friction;
+          limited += norm(fb[c].tangential_force) > 0.999 * mu_d * std::abs(fb[c].normal_force);
+        }
+        // the stores, every declared slot (spring, and the flag and stiffness where declared)
+        const Slots &sb = t.batch.slots(), &ss = t.single.slots();
+        for (std::size_t s = 0; s < Slots::max_slots; ++s)
+          for (std::size_t k2 = 0; k2 < n_contacts; ++k2) {
+            if (sb.vec3[s]) {
+              EXPECT_EQ(sb.vec3[s][k2], ss.vec3[s][k2]) << label << " vec3 " << s;
+            }
+            if (sb.f32[s]) {
+              EXPECT_EQ(sb.f32[s][k2], ss.f32[s][k2]) << label << " f32 " << s;
+            }
+            if (sb.f64[s]) {
+              EXPECT_EQ(sb.f64[s][k2], ss.f64[s][k2]) << label << " f64 " << s;
+            }
+          }
+        // the set covers both branches of the friction law: at the Coulomb limit and below it
+        EXPECT_GT(limited, 0u) << label << " step " << step;
+        EXPECT_LT(limited, n_contacts) << label << " step " << step;
+      }
     }
-  }
 }

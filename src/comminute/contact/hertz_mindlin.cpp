@@ -96,15 +96,26 @@ class HertzMindlin final : public ContactLaw {
         sx[c] = spring.x;
         sy[c] = spring.y;
         sz[c] = spring.z;
-        modulus[c] = p.effective_modulus;
-        beta[c] = p.damping_beta;
-        shear[c] = p.effective_shear_modulus;
-        shear_root[c] = p.shear_normal_root;
-        mu[c] = p.friction;
-        mu_dynamic[c] = p.dynamic_friction;
         const float* flag = slots_.flag(s);
         was[c] = flag != nullptr ? *flag : 0.0;
       }
+      // the pairs' parameters: one material pair for the whole stage (the common case, a bed of
+      // one material) is spread over the columns, else they are read contact by contact
+      const PairParameters* p0 = P[0];
+      bool one_pair = true;
+      for (std::size_t c = 1; c < n; ++c) one_pair &= P[c] == p0;
+      const auto parameter = [&](Column& column, double PairParameters::*field) {
+        if (one_pair)
+          std::fill_n(column.begin(), n, p0->*field);
+        else
+          for (std::size_t c = 0; c < n; ++c) column[c] = P[c]->*field;
+      };
+      parameter(modulus, &PairParameters::effective_modulus);
+      parameter(beta, &PairParameters::damping_beta);
+      parameter(shear, &PairParameters::effective_shear_modulus);
+      parameter(shear_root, &PairParameters::shear_normal_root);
+      parameter(mu, &PairParameters::friction);
+      parameter(mu_dynamic, &PairParameters::dynamic_friction);
       // normal_and_spring() and tangential(), operation for operation; project_spring()'s two
       // cases chosen per contact, restore_length() applied
       for (std::size_t c = 0; c < n; ++c) {

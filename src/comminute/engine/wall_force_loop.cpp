@@ -68,11 +68,50 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       mine.ended.clear();
       mine.starts.clear();
       mine.contacts.clear();
-      // the force of candidate q touching as `hit` (not touching: its state is cleared)
-      auto force = [&](std::size_t q, const WallContact& hit) {
+      // the touching contacts wait in a run of up to kRun for the law, evaluated in one call
+      // (the law inlined in its loop, as in the pair loop); their forces are then added in
+      // candidate order, so every particle and wall sums them in the same order as one by one
+      LookUp::Run& run = look.run;
+      const auto evaluate_run = [&]() {
+        if (run.n == 0) return;
+        pipeline.evaluate(ContactBatch{run.n, run.ck.data(), run.pp.data(), run.index.data(),
+                                       &slots, run.out.data()});
+        for (std::size_t r = 0; r < run.n; ++r) {
+          const ContactForces& out = run.out[r];
+          const auto& [i, hit, vwall, ri] = run.who[r];
+          const WallContactRecord& c = candidates[run.index[r]];
+          const Wall& w = *walls[c.wall];
+          const Vec3& nrm = hit.normal;
+          const Vec3 fc = out.normal_force * nrm + out.tangential_force;
+          p.f[i] += fc;
+          p.t[i] += out.rolling_torque - ri * cross(nrm, out.tangential_force);
+          mine.force[c.wall] -= fc;
+          mine.torque[c.wall] -= cross(hit.point - w.kinematics.center, fc);
+          if (armed) {  // Love–Weber: a particle's slots are all in this thread's range
+            add_sym_outer(cs->moment[i], fc, hit.point - p.x[i], 1.0);
+            if (list)
+              mine.contacts.push_back({i, -1 - static_cast<std::int32_t>(c.wall), p.x[i], hit.point,
+                                       fc, out.normal_force});
+          }
+          mine.energy.add(out);
+          mine.energy.wall_work +=
+              dot(fc, vwall) * dt;  // power of the wall's force on the particle
+          if (w.tracks_wear() && hit.element >= 0)
+            mine.wear.push_back(
+                {c.wall, hit.element, out.normal_force, norm(run.ck[r].tangential_velocity) * dt});
+          WallContactRecord rec = c;
+          rec.feature = hit.feature;
+          rec.candidate = static_cast<std::uint32_t>(run.index[r]);
+          mine.touching.push_back(rec);
+        }
+        std::fill_n(run.out.begin(), run.n, ContactForces{});
+        run.n = 0;
+      };
+      // candidate q touching as `hit` joins the run (not touching: its state is cleared)
+      const auto touch = [&](std::size_t q, const WallContact& hit) {
         const WallContactRecord& c = candidates[q];
         const std::uint32_t i = c.particle;
-        Wall& w = *walls[c.wall];
+        const Wall& w = *walls[c.wall];
         if (hit.overlap <= 0) {
           if (state.active[q]) {
             if (record) mine.ended.push_back({i, c.wall, true, record->totals(state.at(q))});
@@ -89,7 +128,8 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
         const Vec3 vwall = w.kinematics.velocity_at(hit.point);
         const Vec3 vrel = p.v[i] - cross(p.w[i], ri * nrm) - vwall;
         const double vn = dot(vrel, nrm);
-        ContactKinematics ck;
+        ContactKinematics& ck = run.ck[run.n];
+        ck = ContactKinematics{};
         ck.dt = dt;
         ck.normal = nrm;
         ck.overlap = overlap;
@@ -101,29 +141,10 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
           ck.relative_angular_velocity = p.w[i];
           ck.effective_inertia = p.inertia[i];
         }
-        const PairParameters& pp = materials.pair(p.material[i], w.material);
-        ContactForces out;
-        pipeline.evaluate(ck, pp, StateRef{&slots, q}, out);
-        const Vec3 fc = out.normal_force * nrm + out.tangential_force;
-        p.f[i] += fc;
-        p.t[i] += out.rolling_torque - ri * cross(nrm, out.tangential_force);
-        mine.force[c.wall] -= fc;
-        mine.torque[c.wall] -= cross(hit.point - w.kinematics.center, fc);
-        if (armed) {  // Love–Weber: a particle's slots are all in this thread's range
-          add_sym_outer(cs->moment[i], fc, hit.point - p.x[i], 1.0);
-          if (list)
-            mine.contacts.push_back({i, -1 - static_cast<std::int32_t>(c.wall), p.x[i], hit.point,
-                                     fc, out.normal_force});
-        }
-        mine.energy.add(out);
-        mine.energy.wall_work += dot(fc, vwall) * dt;  // power of the wall's force on the particle
-        if (w.tracks_wear() && hit.element >= 0)
-          mine.wear.push_back(
-              {c.wall, hit.element, out.normal_force, norm(ck.tangential_velocity) * dt});
-        WallContactRecord rec = c;
-        rec.feature = hit.feature;
-        rec.candidate = static_cast<std::uint32_t>(q);
-        mine.touching.push_back(rec);
+        run.pp[run.n] = &materials.pair(p.material[i], w.material);
+        run.index[run.n] = q;
+        run.who[run.n] = {i, hit, vwall, ri};
+        if (++run.n == kRun) evaluate_run();
       };
       auto& found = look.found;
       auto& hits = look.hits;
@@ -162,9 +183,10 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
               break;
             }
         }
-        for (std::size_t k = q; k < end; ++k) force(k, hits[k - q]);
+        for (std::size_t k = q; k < end; ++k) touch(k, hits[k - q]);
         q = end;
       }
+      evaluate_run();
     }
   }
   touching.clear();

@@ -94,8 +94,8 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
                                        fc, out.normal_force});
           }
           mine.energy.add(out);
-          mine.energy.wall_work +=
-              dot(fc, vwall) * dt;  // power of the wall's force on the particle
+          // the work of the wall's force on the particle
+          mine.energy.wall_work += dot(fc, vwall) * dt;
           if (w.tracks_wear() && hit.element >= 0)
             mine.wear.push_back(
                 {c.wall, hit.element, out.normal_force, norm(run.ck[r].tangential_velocity) * dt});

@@ -5,18 +5,20 @@
 #include <cmath>
 
 #include "comminute/core/parallel.hpp"
+#include "comminute/engine/contact_run.hpp"
 #include "comminute/engine/pair_split.hpp"
 #include "comminute/engine/parallel_threshold.hpp"
 
 namespace comminute {
 
 namespace {
-constexpr std::size_t kRun = 64;    // contacts per call of the contact pipeline
 constexpr std::size_t kAhead = 16;  // pairs between a position's prefetch and its use
 struct Touching {                   // a touching pair of a run: its particles and lever arms (m)
   std::uint32_t i, j;
   double ri, rj;
 };
+using PairRun = ContactRun<Touching>;
+constexpr std::size_t kRun = PairRun::kSize;
 
 }  // namespace
 
@@ -78,32 +80,27 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
   }
   EnergyTally tl;  // local: threads' tallies side by side in memory would share a cache line
   const std::size_t k0 = rows[own0], k1 = rows[own1];
-  // the touching pairs are gathered into runs of up to kRun contacts, evaluated in one call
-  // (the law inlined in its loop), then their forces are added in pair order
-  std::array<ContactKinematics, kRun> ck;
-  std::array<const PairParameters*, kRun> pp;
-  std::array<std::size_t, kRun> index;
-  std::array<ContactForces, kRun> out;
-  std::array<Touching, kRun> who;
-  for (auto& c : ck) c.dt = dt;
-  std::fill(out.begin(), out.end(), ContactForces{});
+  // the touching pairs are gathered into runs (contact_run.hpp), evaluated in one call (the law
+  // inlined in its loop), then their forces are added in pair order
+  PairRun run;
+  for (auto& c : run.kinematics) c.dt = dt;
   std::array<Vec3, kRun> gap;  // x_i - x_j of the gathered pairs
   std::array<double, kRun> gap2, reach, dist;
-  std::size_t nrun = 0;
   // (the lambdas always inlined: each version of thread_pairs gets its own copy)
   auto flush = [&]() __attribute__((always_inline)) {
-    if (nrun == 0) return;
-    pipeline.evaluate(ContactBatch{nrun, ck.data(), pp.data(), index.data(), &slots, out.data()});
+    const std::size_t n = run.size;  // (a local, as in the gather below)
+    if (n == 0) return;
+    run.evaluate(pipeline, slots);
     // particle i's force and torque stay in registers over its consecutive contacts (the list
     // is sorted by i; j != i, so no other write of the run touches them): the same sums in the
     // same order as adding to F[i], T[i] contact by contact
-    std::uint32_t held = who[0].i;
+    std::uint32_t held = run.who[0].i;
     Vec3 fi = F[held], ti = T[held];
-    for (std::size_t c = 0; c < nrun; ++c) {
-      const ContactForces& o = out[c];
-      const Vec3& nrm = ck[c].normal;
+    for (std::size_t c = 0; c < n; ++c) {
+      const ContactForces& o = run.forces[c];
+      const Vec3& nrm = run.kinematics[c].normal;
       // by reference: a copy of the record stalls on its two stores
-      const auto& [i, j, ri, rj] = who[c];
+      const auto& [i, j, ri, rj] = run.who[c];
       if (i != held) {
         F[held] = fi;
         T[held] = ti;
@@ -140,8 +137,7 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
     }
     F[held] = fi;
     T[held] = ti;
-    std::fill_n(out.begin(), nrun, ContactForces{});
-    nrun = 0;
+    run.clear();
   };
   // the pairs visited, by position m: the pruned list's (pair_at(m) = its m-th pair), or all of
   // [k0, k1) (pair_at(m) = m)
@@ -150,7 +146,10 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
     for (std::size_t m = m0; m < m1;) {
       // 1. gather the next run of touching pairs without a branch per pair (whether a pair
       // touches is unpredictable in a dense bed); a pair that separated is rare
-      for (; m < m1 && nrun < kRun; ++m) {
+      // (the run's count in a local while it grows: the run itself stays in memory, where a
+      // store of a byte, active[k], could change it as far as the compiler knows)
+      std::size_t n = run.size;
+      for (; m < m1 && n < kRun; ++m) {
         const std::size_t k = pair_at(m);
         const std::uint32_t i = first[k], j = second[k];
         // the other particles are scattered in memory: their positions are asked for kAhead
@@ -170,21 +169,22 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
         const double rsum = R[i] + R[j];
         const double dist2 = norm2(d);
         const bool touches = dist2 < rsum * rsum;
-        gap[nrun] = d;
-        gap2[nrun] = dist2;
-        reach[nrun] = rsum;
-        index[nrun] = k;
-        nrun += touches ? 1 : 0;
+        gap[n] = d;
+        gap2[n] = dist2;
+        reach[n] = rsum;
+        run.index[n] = k;
+        n += touches ? 1 : 0;
         if (!touches & (active[k] != 0)) {  // the bodies separated: the contact's state is gone
           if (record) separated.push_back({i, j, false, record->totals(state.at(k))});
           state.clear(k);
         }
       }
+      run.size = n;
       // 2. the kinematics of the run's contacts; the distances' roots first, in a loop of their
       // own (independent roots overlap instead of each contact waiting on its own)
-      for (std::size_t c = 0; c < nrun; ++c) dist[c] = std::sqrt(gap2[c]);
-      for (std::size_t c = 0; c < nrun; ++c) {
-        const std::size_t kc = index[c];
+      for (std::size_t c = 0; c < n; ++c) dist[c] = std::sqrt(gap2[c]);
+      for (std::size_t c = 0; c < n; ++c) {
+        const std::size_t kc = run.index[c];
         const std::uint32_t i = first[kc], j = second[kc];
         if (sp && !active[kc]) sp->starts.push_back({i, static_cast<std::int32_t>(j)});
         active[kc] = 1;
@@ -194,7 +194,7 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
         const double ri = R[i] - 0.5 * overlap, rj = R[j] - 0.5 * overlap;
         const Vec3 vrel = V[i] - V[j] - cross(W[i], ri * nrm) - cross(W[j], rj * nrm);
         const double vn = dot(vrel, nrm);
-        ContactKinematics& ct = ck[c];
+        ContactKinematics& ct = run.kinematics[c];
         ct.normal = nrm;
         ct.overlap = overlap;
         ct.overlap_rate = -vn;
@@ -205,11 +205,11 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
           ct.relative_angular_velocity = W[i] - W[j];
           ct.effective_inertia = I[i] * I[j] / (I[i] + I[j]);
         }
-        pp[c] = &materials.pair(mat[i], mat[j]);
-        who[c] = {i, j, ri, rj};
+        run.parameters[c] = &materials.pair(mat[i], mat[j]);
+        run.who[c] = {i, j, ri, rj};
       }
       // 3. the law and the forces
-      if (nrun == kRun || m == m1) flush();
+      if (run.full() || m == m1) flush();
     }
   };
   if (near != nullptr) {

@@ -68,16 +68,15 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       mine.ended.clear();
       mine.starts.clear();
       mine.contacts.clear();
-      // the touching contacts wait in a run of up to kRun for the law, evaluated in one call
-      // (the law inlined in its loop, as in the pair loop); their forces are then added in
-      // candidate order, so every particle and wall sums them in the same order as one by one
-      LookUp::Run& run = look.run;
+      // the touching contacts wait in a run for the law, evaluated in one call (the law inlined
+      // in its loop, as in the pair loop); their forces are then added in candidate order, so
+      // every particle and wall sums them in the same order as one by one
+      ContactRun<Touch>& run = look.run;
       const auto evaluate_run = [&]() {
-        if (run.n == 0) return;
-        pipeline.evaluate(ContactBatch{run.n, run.ck.data(), run.pp.data(), run.index.data(),
-                                       &slots, run.out.data()});
-        for (std::size_t r = 0; r < run.n; ++r) {
-          const ContactForces& out = run.out[r];
+        if (run.size == 0) return;
+        run.evaluate(pipeline, slots);
+        for (std::size_t r = 0; r < run.size; ++r) {
+          const ContactForces& out = run.forces[r];
           const auto& [i, hit, vwall, ri] = run.who[r];
           const WallContactRecord& c = candidates[run.index[r]];
           const Wall& w = *walls[c.wall];
@@ -97,15 +96,14 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
           // the work of the wall's force on the particle
           mine.energy.wall_work += dot(fc, vwall) * dt;
           if (w.tracks_wear() && hit.element >= 0)
-            mine.wear.push_back(
-                {c.wall, hit.element, out.normal_force, norm(run.ck[r].tangential_velocity) * dt});
+            mine.wear.push_back({c.wall, hit.element, out.normal_force,
+                                 norm(run.kinematics[r].tangential_velocity) * dt});
           WallContactRecord rec = c;
           rec.feature = hit.feature;
           rec.candidate = static_cast<std::uint32_t>(run.index[r]);
           mine.touching.push_back(rec);
         }
-        std::fill_n(run.out.begin(), run.n, ContactForces{});
-        run.n = 0;
+        run.clear();
       };
       // candidate q touching as `hit` joins the run (not touching: its state is cleared)
       const auto touch = [&](std::size_t q, const WallContact& hit) {
@@ -128,7 +126,7 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
         const Vec3 vwall = w.kinematics.velocity_at(hit.point);
         const Vec3 vrel = p.v[i] - cross(p.w[i], ri * nrm) - vwall;
         const double vn = dot(vrel, nrm);
-        ContactKinematics& ck = run.ck[run.n];
+        ContactKinematics& ck = run.kinematics[run.size];
         ck = ContactKinematics{};
         ck.dt = dt;
         ck.normal = nrm;
@@ -141,10 +139,11 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
           ck.relative_angular_velocity = p.w[i];
           ck.effective_inertia = p.inertia[i];
         }
-        run.pp[run.n] = &materials.pair(p.material[i], w.material);
-        run.index[run.n] = q;
-        run.who[run.n] = {i, hit, vwall, ri};
-        if (++run.n == kRun) evaluate_run();
+        run.parameters[run.size] = &materials.pair(p.material[i], w.material);
+        run.index[run.size] = q;
+        run.who[run.size] = {i, hit, vwall, ri};
+        ++run.size;
+        if (run.full()) evaluate_run();
       };
       auto& found = look.found;
       auto& hits = look.hits;

@@ -5,18 +5,18 @@
 // others, so a split by particle index or candidate count leaves one thread with more work: the
 // threads take chunks as they come free (dynamic schedule). Wall forces and tallies are summed per
 // chunk and combined in chunk order, so the result depends neither on which thread took which
-// chunk nor on the number of threads. Touching contacts wait in runs of up to kRun for the
+// chunk nor on the number of threads. Touching contacts wait in runs (contact_run.hpp) for the
 // contact pipeline's batch (the law inlined in its vector loop, as in the pair loop) and their
 // forces are added in candidate order: the same bits as evaluating them one by one. A contact that
 // moves to an adjacent feature of the same wall in one step (a sphere rolling from one triangle of
 // a mesh onto the next: Wall::continues) keeps its history (tangential spring), and sliding on a
 // wall that tracks wear is reported to it after the loop, in chunk order.
-#include <array>
 #include <memory>
 #include <vector>
 
 #include "comminute/contact/contact_state.hpp"
 #include "comminute/engine/contact_pipeline.hpp"
+#include "comminute/engine/contact_run.hpp"
 #include "comminute/engine/ended_contact.hpp"
 #include "comminute/engine/energy_tally.hpp"
 #include "comminute/engine/wall_contact.hpp"
@@ -57,23 +57,15 @@ class WallForceLoop {
     std::vector<ContactStart> starts;
     std::vector<ContactRecord> contacts;
   };
-  static constexpr std::size_t kRun = 64;  // contacts per call of the contact pipeline
+  struct Touch {  // a touching contact of a run (its index: the candidate), who receives its force
+    std::uint32_t particle;
+    WallContact hit;
+    Vec3 wall_velocity;  // m/s, of the wall at the contact point
+    double lever;        // m, the particle's radius less the overlap
+  };
   struct LookUp {  // one thread's scratch: the look-up of one particle's candidates, and the run
     std::vector<WallContact> found, hits;
-    struct Run {  // touching contacts waiting for the law: inputs, results, who receives them
-      std::array<ContactKinematics, kRun> ck;
-      std::array<const PairParameters*, kRun> pp;
-      std::array<std::size_t, kRun> index;  // the candidates (their state's slots)
-      std::array<ContactForces, kRun> out;
-      struct Touch {
-        std::uint32_t particle;
-        WallContact hit;
-        Vec3 wall_velocity;  // m/s, of the wall at the contact point
-        double lever;        // m, the particle's radius less the overlap
-      };
-      std::array<Touch, kRun> who;
-      std::size_t n = 0;
-    } run;
+    ContactRun<Touch> run;
   };
   std::vector<WallTally> parts_;    // per chunk of candidates
   std::vector<LookUp> scratch_;     // per thread

@@ -6,6 +6,7 @@
 // operations in the same order on the same numbers leave no room for a difference.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -20,7 +21,7 @@ using namespace comminute;
 
 namespace {
 
-constexpr std::size_t n_contacts = 150;  // more than two stages of 64
+constexpr std::size_t n_contacts = 150;  // more than two batches of kBatchSize (64)
 
 // One variant of the law with two stores of the same layout: one driven by compute_batch, the
 // other by compute() contact by contact.
@@ -105,8 +106,16 @@ TEST(HertzMindlinBatch, StagedBatchEqualsContactByContact) {
           t.single.at(index[5]).vec3(spring) = along;
         }
         std::vector<ContactForces> fb(n_contacts), fs(n_contacts);
-        t.law->compute_batch(ContactBatch{n_contacts, k.data(), params.data(), index.data(),
-                                          &t.batch.slots(), fb.data()});
+        for (std::size_t c0 = 0; c0 < n_contacts; c0 += kBatchSize) {   // batches of the most
+          const std::size_t n = std::min(kBatchSize, n_contacts - c0);  // contacts, and a rest
+          KinematicsColumns columns;
+          columns.dt = k[c0].dt;
+          for (std::size_t c = 0; c < n; ++c) columns.set(c, k[c0 + c]);
+          ForceColumns forces;
+          t.law->compute_batch(ContactBatch{n, &columns, params.data() + c0, index.data() + c0,
+                                            &t.batch.slots(), &forces});
+          for (std::size_t c = 0; c < n; ++c) fb[c0 + c] = forces.at(c);
+        }
         for (std::size_t c = 0; c < n_contacts; ++c)
           t.law->compute(k[c], *params[c], t.single.at(index[c]), fs[c]);
         std::size_t limited = 0;

@@ -4,6 +4,8 @@
 // from the [contact] table and reads its own keys; it declares the per-contact state it keeps
 // (contact_state.hpp) and answers for its own time-step limit. Rolling resistance and adhesion are
 // separate small interfaces composed with the law (rolling_resistance.hpp, cohesion.hpp).
+#include <algorithm>
+#include <array>
 #include <limits>
 #include <memory>
 #include <string>
@@ -41,20 +43,85 @@ struct ContactForces {
   double friction_dissipation = 0;   // J, dissipated by sliding (and rolling slip) this step
 };
 
-// Contacts evaluated in one call (the pair loop hands them over in runs): contact c has the
-// kinematics kinematics[c], the parameters *parameters[c] and the slots of contact index[c] of the
-// store `slots`; its forces go to forces[c] (zeroed by the caller).
+// A batch's contacts in columns (structure of arrays, one array per component), so that a law's
+// vector loops read its inputs and write its results in place: contact c of a batch has the
+// kinematics kinematics.<field>[c] and its forces go to forces.<field>[c]. At most kBatchSize
+// contacts per batch (the force loops' runs, engine/contact_run.hpp).
+inline constexpr std::size_t kBatchSize = 64;
+using BatchColumn = std::array<double, kBatchSize>;
+
+struct KinematicsColumns {  // ContactKinematics' fields by component; one dt for the batch
+  BatchColumn nx{}, ny{}, nz{}, overlap{}, overlap_rate{}, vx{}, vy{}, vz{}, wx{}, wy{}, wz{};
+  BatchColumn effective_radius{}, effective_mass{}, effective_inertia{};
+  double dt = 0;
+  ContactKinematics at(std::size_t c) const {
+    return {{nx[c], ny[c], nz[c]},
+            overlap[c],
+            overlap_rate[c],
+            {vx[c], vy[c], vz[c]},
+            {wx[c], wy[c], wz[c]},
+            effective_radius[c],
+            effective_mass[c],
+            effective_inertia[c],
+            dt};
+  }
+  void set(std::size_t c, const ContactKinematics& k) {  // (dt is the batch's)
+    nx[c] = k.normal.x, ny[c] = k.normal.y, nz[c] = k.normal.z;
+    overlap[c] = k.overlap, overlap_rate[c] = k.overlap_rate;
+    vx[c] = k.tangential_velocity.x, vy[c] = k.tangential_velocity.y;
+    vz[c] = k.tangential_velocity.z;
+    wx[c] = k.relative_angular_velocity.x, wy[c] = k.relative_angular_velocity.y;
+    wz[c] = k.relative_angular_velocity.z;
+    effective_radius[c] = k.effective_radius, effective_mass[c] = k.effective_mass;
+    effective_inertia[c] = k.effective_inertia;
+  }
+};
+
+struct ForceColumns {  // ContactForces' fields by component
+  BatchColumn normal_force{}, elastic_normal_force{}, fx{}, fy{}, fz{}, tx{}, ty{}, tz{};
+  BatchColumn stored_energy{}, normal_elastic_energy{}, damping_dissipation{},
+      friction_dissipation{};
+  ContactForces at(std::size_t c) const {
+    return {normal_force[c],        elastic_normal_force[c], {fx[c], fy[c], fz[c]},
+            {tx[c], ty[c], tz[c]},  stored_energy[c],        normal_elastic_energy[c],
+            damping_dissipation[c], friction_dissipation[c]};
+  }
+  void set(std::size_t c, const ContactForces& f) {
+    normal_force[c] = f.normal_force, elastic_normal_force[c] = f.elastic_normal_force;
+    fx[c] = f.tangential_force.x, fy[c] = f.tangential_force.y, fz[c] = f.tangential_force.z;
+    tx[c] = f.rolling_torque.x, ty[c] = f.rolling_torque.y, tz[c] = f.rolling_torque.z;
+    stored_energy[c] = f.stored_energy, normal_elastic_energy[c] = f.normal_elastic_energy;
+    damping_dissipation[c] = f.damping_dissipation;
+    friction_dissipation[c] = f.friction_dissipation;
+  }
+  // Zeroes contacts [0, n) (a batch adds to its forces).
+  void clear(std::size_t n) {
+    for (BatchColumn* col :
+         {&normal_force, &elastic_normal_force, &fx, &fy, &fz, &tx, &ty, &tz, &stored_energy,
+          &normal_elastic_energy, &damping_dissipation, &friction_dissipation})
+      std::fill_n(col->begin(), n, 0.0);
+  }
+};
+
+// Contacts evaluated in one call (the force loops hand them over in runs): contact c < size
+// (at most kBatchSize) has the kinematics kinematics->at(c), the parameters *parameters[c] and the
+// slots of contact index[c] of the store `slots`; its forces go to forces->at(c) (zeroed by the
+// caller).
 struct ContactBatch {
   std::size_t size = 0;
-  const ContactKinematics* kinematics = nullptr;
+  const KinematicsColumns* kinematics = nullptr;
   const PairParameters* const* parameters = nullptr;
   const std::size_t* index = nullptr;
   const Slots* slots = nullptr;
-  ContactForces* forces = nullptr;
+  ForceColumns* forces = nullptr;
   template <class F>  // f(kinematics, parameters, state, forces) for every contact, in order
   void for_each(F f) const {
-    for (std::size_t c = 0; c < size; ++c)
-      f(kinematics[c], *parameters[c], StateRef{slots, index[c]}, forces[c]);
+    for (std::size_t c = 0; c < size; ++c) {
+      const ContactKinematics k = kinematics->at(c);
+      ContactForces out = forces->at(c);
+      f(k, *parameters[c], StateRef{slots, index[c]}, out);
+      forces->set(c, out);
+    }
   }
 };
 

@@ -43,22 +43,29 @@ class HertzMindlin final : public ContactLaw {
   void compute_batch(const ContactBatch& b) const override { batch(b); }
 
  private:
-  // The contacts of a batch in stages, each a loop over up to kStage contacts: the square roots of
-  // the contact radius and of the dashpot each in a loop of their own (independent, so they overlap
-  // and vectorise instead of each contact waiting on its own chain of division and roots); the
-  // contacts' inputs gathered into columns, and all the arithmetic in structure-of-arrays loops
-  // that vectorise: a branch of the law (the spring projected or not, sticking, capped or sliding)
-  // is computed for every contact and each keeps its own (whether a contact slides is
-  // unpredictable in a flowing bed: 40 % of the contacts of the drum bench). Every contact goes
-  // through the same operations as compute(), coulomb_rotated() included.
+  // The contacts of a batch (at most kBatchSize) in stages, each a loop over the batch's contacts:
+  // the square roots of the contact radius and of the dashpot each in a loop of their own
+  // (independent, so they overlap and vectorise instead of each contact waiting on its own chain
+  // of division and roots); the inputs read from the batch's columns and the results written to
+  // them, all the arithmetic in structure-of-arrays loops that vectorise: a branch of the law (the
+  // spring projected or not, sticking, capped or sliding) is computed for every contact and each
+  // keeps its own (whether a contact slides is unpredictable in a flowing bed: 40 % of the contacts
+  // of the drum bench). Every contact goes through the same operations as compute(),
+  // coulomb_rotated() included.
   COMMINUTE_VECTOR_CLONES void batch(const ContactBatch& b) const {
-    constexpr std::size_t kStage = 64;
-    using Column = std::array<double, kStage>;
-    Column arg, a, root;
-    // a contact's inputs: the normal (nx, ny, nz), overlap, its rate, v_t, dt, the stored spring
-    // (after follow_stiffness()), the pair's E*, beta, G*, sqrt(4 G*/E*), mu_s, mu_d, the sliding
-    // flag (0 or 1)
-    Column nx, ny, nz, delta, rate, vx, vy, vz, dt, sx, sy, sz;
+    using Column = BatchColumn;
+    const std::size_t n = b.size;
+    const KinematicsColumns& K = *b.kinematics;
+    ForceColumns& out = *b.forces;
+    const PairParameters* const* P = b.parameters;
+    // the inputs: the batch's normal, overlap, its rate and v_t, read in place; in columns of this
+    // frame (which nothing else writes, so the loops below vectorise without checks of overlap)
+    // the stored spring (after follow_stiffness()), the pair's E*, beta, G*, sqrt(4 G*/E*), mu_s,
+    // mu_d, the sliding flag (0 or 1)
+    const Column &nx = K.nx, &ny = K.ny, &nz = K.nz, &delta = K.overlap, &rate = K.overlap_rate;
+    const Column &vx = K.vx, &vy = K.vy, &vz = K.vz;
+    const double dt = K.dt;
+    Column arg, a, root, sx, sy, sz;
     Column modulus, beta, shear, shear_root, mu, mu_dynamic, was;
     // the normal force (elastic, total), its energy, its dashpot's work; the rotated spring, k_t,
     // c_t, the Coulomb limits
@@ -66,136 +73,124 @@ class HertzMindlin final : public ContactLaw {
     // the friction law's results: the stored spring, the force, the dashpot's and the slip's work,
     // the spring's energy, the sliding flag (0 or 1)
     Column tx, ty, tz, fx, fy, fz, damping, friction, energy, now;
-    for (std::size_t c0 = 0; c0 < b.size; c0 += kStage) {
-      const std::size_t n = std::min(kStage, b.size - c0);
-      const ContactKinematics* K = b.kinematics + c0;
-      const PairParameters* const* P = b.parameters + c0;
-      ContactForces* out = b.forces + c0;
-      for (std::size_t c = 0; c < n; ++c) arg[c] = radius_squared(K[c]);
-      for (std::size_t c = 0; c < n; ++c) a[c] = std::sqrt(arg[c]);
-      for (std::size_t c = 0; c < n; ++c) arg[c] = stiffness_mass(K[c], *P[c], a[c]);
-      for (std::size_t c = 0; c < n; ++c) root[c] = std::sqrt(arg[c]);
-      // the inputs in columns; the spring first carried to this step's stiffness (rescale)
-      for (std::size_t c = 0; c < n; ++c) {
-        const ContactKinematics& k = K[c];
-        const PairParameters& p = *P[c];
-        const StateRef s{b.slots, b.index[c0 + c]};
-        Vec3& spring = s.vec3(slots_.spring);
-        if (rescale_)
-          out[c].friction_dissipation += follow_stiffness(spring, s.f64(slots_.stiffness),
-                                                          mindlin(p.effective_shear_modulus, a[c]));
-        nx[c] = k.normal.x;
-        ny[c] = k.normal.y;
-        nz[c] = k.normal.z;
-        delta[c] = k.overlap;
-        rate[c] = k.overlap_rate;
-        vx[c] = k.tangential_velocity.x;
-        vy[c] = k.tangential_velocity.y;
-        vz[c] = k.tangential_velocity.z;
-        dt[c] = k.dt;
-        sx[c] = spring.x;
-        sy[c] = spring.y;
-        sz[c] = spring.z;
-        const float* flag = slots_.flag(s);
-        was[c] = flag != nullptr ? *flag : 0.0;
-      }
-      // the pairs' parameters: one material pair for the whole stage (the common case, a bed of
-      // one material) is spread over the columns, else they are read contact by contact
-      const PairParameters* p0 = P[0];
-      bool one_pair = true;
-      for (std::size_t c = 1; c < n; ++c) one_pair &= P[c] == p0;
-      const auto parameter = [&](Column& column, double PairParameters::*field) {
-        if (one_pair)
-          std::fill_n(column.begin(), n, p0->*field);
-        else
-          for (std::size_t c = 0; c < n; ++c) column[c] = P[c]->*field;
-      };
-      parameter(modulus, &PairParameters::effective_modulus);
-      parameter(beta, &PairParameters::damping_beta);
-      parameter(shear, &PairParameters::effective_shear_modulus);
-      parameter(shear_root, &PairParameters::shear_normal_root);
-      parameter(mu, &PairParameters::friction);
-      parameter(mu_dynamic, &PairParameters::dynamic_friction);
-      // normal_and_spring() and tangential(), operation for operation; project_spring()'s two
-      // cases chosen per contact, restore_length() applied
-      for (std::size_t c = 0; c < n; ++c) {
-        const double fel = elastic_force(modulus[c], a[c], delta[c]);
-        const double gn = normal_damping(beta[c], root[c]);
-        const double fd = gn * rate[c];
-        const double fn = fel + fd;
-        elastic[c] = fel;
-        normal[c] = fn;
-        normal_energy[c] = elastic_energy(fel, delta[c]);
-        normal_work[c] = fd * rate[c] * dt[c];
-        const double len2 = sx[c] * sx[c] + sy[c] * sy[c] + sz[c] * sz[c];
-        const double along = sx[c] * nx[c] + sy[c] * ny[c] + sz[c] * nz[c];
-        const double px = sx[c] - nx[c] * along, py = sy[c] - ny[c] * along,
-                     pz = sz[c] - nz[c] * along;
-        const double l2 = px * px + py * py + pz * pz;
-        const bool loaded = len2 > 0.0;
-        const bool turned = loaded & (l2 > 0.0);
-        const double restore = std::sqrt((turned ? len2 : 1.0) / (turned ? l2 : 1.0));
-        rx[c] = (loaded ? px : sx[c]) * restore;
-        ry[c] = (loaded ? py : sy[c]) * restore;
-        rz[c] = (loaded ? pz : sz[c]) * restore;
-        kt[c] = mindlin(shear[c], a[c]);
-        ct[c] = gn * shear_root[c];
-        stick[c] = mu[c] * std::abs(fn);  // friction_limit()
-        slide[c] = mu_dynamic[c] * std::abs(fn);
-      }
-      if (!tangential_damping_) std::fill_n(ct.begin(), n, 0.0);  // (a loop of its own: vectorises)
-      // coulomb_rotated(), operation for operation: both branches, and the cap of the sticking one,
-      // for every contact (the roots and divisions of the branch not taken are thrown away, even
-      // where they are not finite); a dissipation a contact's branch does not add is -0, which
-      // leaves any sum as it is
-      for (std::size_t c = 0; c < n; ++c) {
-        const double x = rx[c] + vx[c] * dt[c], y = ry[c] + vy[c] * dt[c],
-                     z = rz[c] + vz[c] * dt[c];  // trial = xi + v_t dt
-        const double xi2 = x * x + y * y + z * z;
-        const double k = kt[c];
-        const double spring2 = k * k * xi2;
-        const double lim2 = stick[c] * stick[c];
-        const bool slides = (spring2 > lim2) | ((was[c] != 0.0) & (spring2 > slide[c] * slide[c]));
-        // sticking: fs = -k_t xi, spring + dashpot capped at mu |F_n| by cutting the dashpot part
-        const double fsx = x * -k, fsy = y * -k, fsz = z * -k;
-        double f1 = fsx - vx[c] * ct[c], f2 = fsy - vy[c] * ct[c], f3 = fsz - vz[c] * ct[c];
-        const double ft2 = f1 * f1 + f2 * f2 + f3 * f3;
-        const double cap = stick[c] / std::sqrt(ft2);
-        const bool capped = ft2 > lim2;
-        f1 = capped ? f1 * cap : f1;
-        f2 = capped ? f2 * cap : f2;
-        f3 = capped ? f3 * cap : f3;
-        const double dashpot =
-            -((f1 - fsx) * vx[c] + (f2 - fsy) * vy[c] + (f3 - fsz) * vz[c]) * dt[c];
-        // sliding: the spring cut back to mu_d |F_n|, no dashpot, the slip's work
-        const double cut = slide[c] / (k * std::sqrt(xi2));
-        const double cx = x * cut, cy = y * cut, cz = z * cut;
-        const double ex = x - cx, ey = y - cy, ez = z - cz;
-        const double slip = slide[c] * std::sqrt(ex * ex + ey * ey + ez * ez);
-        tx[c] = slides ? cx : x;
-        ty[c] = slides ? cy : y;
-        tz[c] = slides ? cz : z;
-        fx[c] = slides ? cx * -k : f1;
-        fy[c] = slides ? cy * -k : f2;
-        fz[c] = slides ? cz * -k : f3;
-        damping[c] = slides ? -0.0 : dashpot;
-        friction[c] = slides ? slip : -0.0;
-        energy[c] = 0.5 * k * (slides ? cx * cx + cy * cy + cz * cz : xi2);
-        now[c] = slides ? 1.0 : 0.0;
-      }
-      for (std::size_t c = 0; c < n; ++c) {
-        const StateRef s{b.slots, b.index[c0 + c]};
-        if (float* flag = slots_.flag(s)) *flag = static_cast<float>(now[c]);
-        s.vec3(slots_.spring) = {tx[c], ty[c], tz[c]};
-        ContactForces& o = out[c];
-        o.elastic_normal_force = elastic[c];
-        o.normal_force = normal[c];
-        o.normal_elastic_energy = normal_energy[c];
-        o.stored_energy = normal_energy[c] + energy[c];
-        o.damping_dissipation = normal_work[c] + damping[c];
-        o.friction_dissipation += friction[c];
-        o.tangential_force = {fx[c], fy[c], fz[c]};
-      }
+    // the pairs' parameters: one material pair for the whole batch (the common case, a bed of one
+    // material) is spread over the columns, else they are read contact by contact
+    const PairParameters* p0 = P[0];
+    bool one_pair = true;
+    for (std::size_t c = 1; c < n; ++c) one_pair &= P[c] == p0;
+    const auto parameter = [&](Column& column, double PairParameters::*field) {
+      if (one_pair)
+        std::fill_n(column.begin(), n, p0->*field);
+      else
+        for (std::size_t c = 0; c < n; ++c) column[c] = P[c]->*field;
+    };
+    parameter(modulus, &PairParameters::effective_modulus);
+    parameter(beta, &PairParameters::damping_beta);
+    parameter(shear, &PairParameters::effective_shear_modulus);
+    parameter(shear_root, &PairParameters::shear_normal_root);
+    parameter(mu, &PairParameters::friction);
+    parameter(mu_dynamic, &PairParameters::dynamic_friction);
+    // radius_squared(), stiffness_mass()
+    for (std::size_t c = 0; c < n; ++c) arg[c] = K.effective_radius[c] * delta[c];
+    for (std::size_t c = 0; c < n; ++c) a[c] = std::sqrt(arg[c]);
+    for (std::size_t c = 0; c < n; ++c) arg[c] = 2.0 * modulus[c] * a[c] * K.effective_mass[c];
+    for (std::size_t c = 0; c < n; ++c) root[c] = std::sqrt(arg[c]);
+    // the stored springs, first carried to this step's stiffness (rescale)
+    for (std::size_t c = 0; c < n; ++c) {
+      const StateRef s{b.slots, b.index[c]};
+      Vec3& spring = s.vec3(slots_.spring);
+      if (rescale_)
+        out.friction_dissipation[c] +=
+            follow_stiffness(spring, s.f64(slots_.stiffness), mindlin(shear[c], a[c]));
+      sx[c] = spring.x;
+      sy[c] = spring.y;
+      sz[c] = spring.z;
+      const float* flag = slots_.flag(s);
+      was[c] = flag != nullptr ? *flag : 0.0;
+    }
+    // normal_and_spring() and tangential(), operation for operation; project_spring()'s two
+    // cases chosen per contact, restore_length() applied
+    for (std::size_t c = 0; c < n; ++c) {
+      const double fel = elastic_force(modulus[c], a[c], delta[c]);
+      const double gn = normal_damping(beta[c], root[c]);
+      const double fd = gn * rate[c];
+      const double fn = fel + fd;
+      elastic[c] = fel;
+      normal[c] = fn;
+      normal_energy[c] = elastic_energy(fel, delta[c]);
+      normal_work[c] = fd * rate[c] * dt;
+      const double len2 = sx[c] * sx[c] + sy[c] * sy[c] + sz[c] * sz[c];
+      const double along = sx[c] * nx[c] + sy[c] * ny[c] + sz[c] * nz[c];
+      const double px = sx[c] - nx[c] * along, py = sy[c] - ny[c] * along,
+                   pz = sz[c] - nz[c] * along;
+      const double l2 = px * px + py * py + pz * pz;
+      const bool loaded = len2 > 0.0;
+      const bool turned = loaded & (l2 > 0.0);
+      const double restore = std::sqrt((turned ? len2 : 1.0) / (turned ? l2 : 1.0));
+      rx[c] = (loaded ? px : sx[c]) * restore;
+      ry[c] = (loaded ? py : sy[c]) * restore;
+      rz[c] = (loaded ? pz : sz[c]) * restore;
+      kt[c] = mindlin(shear[c], a[c]);
+      ct[c] = gn * shear_root[c];
+      stick[c] = mu[c] * std::abs(fn);  // friction_limit()
+      slide[c] = mu_dynamic[c] * std::abs(fn);
+    }
+    if (!tangential_damping_) std::fill_n(ct.begin(), n, 0.0);  // (a loop of its own: vectorises)
+    // coulomb_rotated(), operation for operation: both branches, and the cap of the sticking one,
+    // for every contact (the roots and divisions of the branch not taken are thrown away, even
+    // where they are not finite); a dissipation a contact's branch does not add is -0, which
+    // leaves any sum as it is
+    for (std::size_t c = 0; c < n; ++c) {
+      const double x = rx[c] + vx[c] * dt, y = ry[c] + vy[c] * dt,
+                   z = rz[c] + vz[c] * dt;  // trial = xi + v_t dt
+      const double xi2 = x * x + y * y + z * z;
+      const double k = kt[c];
+      const double spring2 = k * k * xi2;
+      const double lim2 = stick[c] * stick[c];
+      const bool slides = (spring2 > lim2) | ((was[c] != 0.0) & (spring2 > slide[c] * slide[c]));
+      // sticking: fs = -k_t xi, spring + dashpot capped at mu |F_n| by cutting the dashpot part
+      const double fsx = x * -k, fsy = y * -k, fsz = z * -k;
+      double f1 = fsx - vx[c] * ct[c], f2 = fsy - vy[c] * ct[c], f3 = fsz - vz[c] * ct[c];
+      const double ft2 = f1 * f1 + f2 * f2 + f3 * f3;
+      const double cap = stick[c] / std::sqrt(ft2);
+      const bool capped = ft2 > lim2;
+      f1 = capped ? f1 * cap : f1;
+      f2 = capped ? f2 * cap : f2;
+      f3 = capped ? f3 * cap : f3;
+      const double dashpot = -((f1 - fsx) * vx[c] + (f2 - fsy) * vy[c] + (f3 - fsz) * vz[c]) * dt;
+      // sliding: the spring cut back to mu_d |F_n|, no dashpot, the slip's work
+      const double cut = slide[c] / (k * std::sqrt(xi2));
+      const double cx = x * cut, cy = y * cut, cz = z * cut;
+      const double ex = x - cx, ey = y - cy, ez = z - cz;
+      const double slip = slide[c] * std::sqrt(ex * ex + ey * ey + ez * ez);
+      tx[c] = slides ? cx : x;
+      ty[c] = slides ? cy : y;
+      tz[c] = slides ? cz : z;
+      fx[c] = slides ? cx * -k : f1;
+      fy[c] = slides ? cy * -k : f2;
+      fz[c] = slides ? cz * -k : f3;
+      damping[c] = slides ? -0.0 : dashpot;
+      friction[c] = slides ? slip : -0.0;
+      energy[c] = 0.5 * k * (slides ? cx * cx + cy * cy + cz * cz : xi2);
+      now[c] = slides ? 1.0 : 0.0;
+    }
+    // the results into the batch's columns (copies of whole columns: vector moves)
+    std::copy_n(elastic.begin(), n, out.elastic_normal_force.begin());
+    std::copy_n(normal.begin(), n, out.normal_force.begin());
+    std::copy_n(normal_energy.begin(), n, out.normal_elastic_energy.begin());
+    std::copy_n(fx.begin(), n, out.fx.begin());
+    std::copy_n(fy.begin(), n, out.fy.begin());
+    std::copy_n(fz.begin(), n, out.fz.begin());
+    for (std::size_t c = 0; c < n; ++c) {
+      out.stored_energy[c] = normal_energy[c] + energy[c];
+      out.damping_dissipation[c] = normal_work[c] + damping[c];
+      out.friction_dissipation[c] += friction[c];
+    }
+    // the springs and flags back to the contacts' slots
+    for (std::size_t c = 0; c < n; ++c) {
+      const StateRef s{b.slots, b.index[c]};
+      if (float* flag = slots_.flag(s)) *flag = static_cast<float>(now[c]);
+      s.vec3(slots_.spring) = {tx[c], ty[c], tz[c]};
     }
   }
 

@@ -5,7 +5,6 @@
 // them to ContactPipeline::evaluate(ContactBatch) in one call (the law inlined in its vector loop),
 // and the loop then adds the forces in run order, which is the order it gathered the contacts in:
 // the same sums as evaluating them one by one.
-#include <algorithm>
 #include <array>
 #include <cstddef>
 
@@ -15,23 +14,23 @@ namespace comminute {
 
 template <class Who>
 struct ContactRun {
-  static constexpr std::size_t kSize = 64;  // contacts per call of the contact pipeline
-  std::array<ContactKinematics, kSize> kinematics;
+  static constexpr std::size_t kSize = kBatchSize;  // contacts per call of the contact pipeline
+  KinematicsColumns kinematics;                     // the contacts' kinematics, by component
   std::array<const PairParameters*, kSize> parameters;
-  std::array<std::size_t, kSize> index;       // the contacts' places in the contact-state store
-  std::array<ContactForces, kSize> forces{};  // zero until evaluate() (the pipeline adds to them)
+  std::array<std::size_t, kSize> index;  // the contacts' places in the contact-state store
+  ForceColumns forces;                   // zero until evaluate() (the pipeline adds to them)
   std::array<Who, kSize> who;
   std::size_t size = 0;
 
   bool full() const { return size == kSize; }
-  // The contact model for contacts [0, size): their forces into forces[0, size).
+  // The contact model for contacts [0, size): their forces into forces.
   void evaluate(const ContactPipeline& pipeline, const Slots& slots) {
-    pipeline.evaluate(ContactBatch{size, kinematics.data(), parameters.data(), index.data(), &slots,
-                                   forces.data()});
+    pipeline.evaluate(
+        ContactBatch{size, &kinematics, parameters.data(), index.data(), &slots, &forces});
   }
   // Empties the run; the forces it used back to zero.
   void clear() {
-    std::fill_n(forces.begin(), size, ContactForces{});
+    forces.clear(size);
     size = 0;
   }
 };

@@ -16,10 +16,14 @@ struct EnergyLedger {
 
 struct EnergyTally {
   double damping = 0, friction = 0, elastic = 0, wall_work = 0;
+  // One contact's dissipation by dashpots and by friction in this step and its stored energy (J).
+  void add(double damping_work, double friction_work, double stored) {
+    damping += damping_work;
+    friction += friction_work;
+    elastic += stored;
+  }
   void add(const ContactForces& out) {
-    damping += out.damping_dissipation;
-    friction += out.friction_dissipation;
-    elastic += out.stored_energy;
+    add(out.damping_dissipation, out.friction_dissipation, out.stored_energy);
   }
   // Books the dissipation into the ledger and adds the elastic energy held now to `held`.
   void book(EnergyLedger& ledger, double& held) const {

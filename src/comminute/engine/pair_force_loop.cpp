@@ -83,7 +83,7 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
   // the touching pairs are gathered into runs (contact_run.hpp), evaluated in one call (the law
   // inlined in its loop), then their forces are added in pair order
   PairRun run;
-  for (auto& c : run.kinematics) c.dt = dt;
+  run.kinematics.dt = dt;
   std::array<Vec3, kRun> gap;  // x_i - x_j of the gathered pairs
   std::array<double, kRun> gap2, reach, dist;
   // (the lambdas always inlined: each version of thread_pairs gets its own copy)
@@ -96,9 +96,12 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
     // same order as adding to F[i], T[i] contact by contact
     std::uint32_t held = run.who[0].i;
     Vec3 fi = F[held], ti = T[held];
+    const ForceColumns& o = run.forces;
+    const KinematicsColumns& k = run.kinematics;
     for (std::size_t c = 0; c < n; ++c) {
-      const ContactForces& o = run.forces[c];
-      const Vec3& nrm = run.kinematics[c].normal;
+      const Vec3 nrm{k.nx[c], k.ny[c], k.nz[c]};
+      const double fn = o.normal_force[c];
+      const Vec3 ft{o.fx[c], o.fy[c], o.fz[c]}, rolling_torque{o.tx[c], o.ty[c], o.tz[c]};
       // by reference: a copy of the record stalls on its two stores
       const auto& [i, j, ri, rj] = run.who[c];
       if (i != held) {
@@ -108,11 +111,11 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
         fi = F[i];
         ti = T[i];
       }
-      tl.add(o);
-      const Vec3 fc = o.normal_force * nrm + o.tangential_force;
+      tl.add(o.damping_dissipation[c], o.friction_dissipation[c], o.stored_energy[c]);
+      const Vec3 fc = fn * nrm + ft;
       fi += fc;
-      ti += o.rolling_torque - ri * cross(nrm, o.tangential_force);
-      const Vec3 tj = -(o.rolling_torque + rj * cross(nrm, o.tangential_force));
+      ti += rolling_torque - ri * cross(nrm, ft);
+      const Vec3 tj = -(rolling_torque + rj * cross(nrm, ft));
       if (j >= own0 && j < own1) {
         F[j] -= fc;
         T[j] += tj;
@@ -120,7 +123,7 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
         queued.push_back({j, -fc, tj});
       }
       if (armed) {  // Love–Weber: l_i = -ri n, l_j = +rj n, forces ±fc
-        const std::uint32_t lb = o.normal_force > threshold ? 1 : 0;
+        const std::uint32_t lb = fn > threshold ? 1 : 0;
         add_sym_outer(cs->moment[i], fc, nrm, -ri);
         cs->load_bearing[i] += lb;
         if (j >= own0 && j < own1) {
@@ -132,7 +135,7 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
           sp->cross.push_back(cm);
         }
         if (want_list)
-          sp->contacts.push_back({i, static_cast<std::int32_t>(j), X[i], X[j], fc, o.normal_force});
+          sp->contacts.push_back({i, static_cast<std::int32_t>(j), X[i], X[j], fc, fn});
       }
     }
     F[held] = fi;
@@ -194,16 +197,18 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
         const double ri = R[i] - 0.5 * overlap, rj = R[j] - 0.5 * overlap;
         const Vec3 vrel = V[i] - V[j] - cross(W[i], ri * nrm) - cross(W[j], rj * nrm);
         const double vn = dot(vrel, nrm);
-        ContactKinematics& ct = run.kinematics[c];
-        ct.normal = nrm;
-        ct.overlap = overlap;
-        ct.overlap_rate = -vn;
-        ct.tangential_velocity = vrel - vn * nrm;
-        ct.effective_radius = R[i] * R[j] / rsum;
-        ct.effective_mass = M[i] * M[j] / (M[i] + M[j]);
+        const Vec3 vt = vrel - vn * nrm;
+        KinematicsColumns& kin = run.kinematics;
+        kin.nx[c] = nrm.x, kin.ny[c] = nrm.y, kin.nz[c] = nrm.z;
+        kin.overlap[c] = overlap;
+        kin.overlap_rate[c] = -vn;
+        kin.vx[c] = vt.x, kin.vy[c] = vt.y, kin.vz[c] = vt.z;
+        kin.effective_radius[c] = R[i] * R[j] / rsum;
+        kin.effective_mass[c] = M[i] * M[j] / (M[i] + M[j]);
         if (rolling) {  // read by the rolling models only
-          ct.relative_angular_velocity = W[i] - W[j];
-          ct.effective_inertia = I[i] * I[j] / (I[i] + I[j]);
+          const Vec3 dw = W[i] - W[j];
+          kin.wx[c] = dw.x, kin.wy[c] = dw.y, kin.wz[c] = dw.z;
+          kin.effective_inertia[c] = I[i] * I[j] / (I[i] + I[j]);
         }
         run.parameters[c] = &materials.pair(mat[i], mat[j]);
         run.who[c] = {i, j, ri, rj};

@@ -72,11 +72,12 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       // in its loop, as in the pair loop); their forces are then added in candidate order, so
       // every particle and wall sums them in the same order as one by one
       ContactRun<Touch>& run = look.run;
+      run.kinematics.dt = dt;
       const auto evaluate_run = [&]() {
         if (run.size == 0) return;
         run.evaluate(pipeline, slots);
         for (std::size_t r = 0; r < run.size; ++r) {
-          const ContactForces& out = run.forces[r];
+          const ContactForces out = run.forces.at(r);
           const auto& [i, hit, vwall, ri] = run.who[r];
           const WallContactRecord& c = candidates[run.index[r]];
           const Wall& w = *walls[c.wall];
@@ -97,7 +98,7 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
           mine.energy.wall_work += dot(fc, vwall) * dt;
           if (w.tracks_wear() && hit.element >= 0)
             mine.wear.push_back({c.wall, hit.element, out.normal_force,
-                                 norm(run.kinematics[r].tangential_velocity) * dt});
+                                 norm(run.kinematics.at(r).tangential_velocity) * dt});
           WallContactRecord rec = c;
           rec.feature = hit.feature;
           rec.candidate = static_cast<std::uint32_t>(run.index[r]);
@@ -126,8 +127,7 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
         const Vec3 vwall = w.kinematics.velocity_at(hit.point);
         const Vec3 vrel = p.v[i] - cross(p.w[i], ri * nrm) - vwall;
         const double vn = dot(vrel, nrm);
-        ContactKinematics& ck = run.kinematics[run.size];
-        ck = ContactKinematics{};
+        ContactKinematics ck;
         ck.dt = dt;
         ck.normal = nrm;
         ck.overlap = overlap;
@@ -139,6 +139,7 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
           ck.relative_angular_velocity = p.w[i];
           ck.effective_inertia = p.inertia[i];
         }
+        run.kinematics.set(run.size, ck);
         run.parameters[run.size] = &materials.pair(p.material[i], w.material);
         run.index[run.size] = q;
         run.who[run.size] = {i, hit, vwall, ri};

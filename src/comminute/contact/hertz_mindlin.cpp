@@ -67,12 +67,12 @@ class HertzMindlin final : public ContactLaw {
     const double dt = K.dt;
     Column arg, a, root, sx, sy, sz;
     Column modulus, beta, shear, shear_root, mu, mu_dynamic, was;
-    // the normal force (elastic, total), its energy, its dashpot's work; the rotated spring, k_t,
-    // c_t, the Coulomb limits
-    Column elastic, normal, normal_energy, normal_work, rx, ry, rz, kt, ct, stick, slide;
-    // the friction law's results: the stored spring, the force, the dashpot's and the slip's work,
-    // the spring's energy, the sliding flag (0 or 1)
-    Column tx, ty, tz, fx, fy, fz, damping, friction, energy, now;
+    // the normal force's energy and its dashpot's work; the rotated spring, k_t, c_t, the Coulomb
+    // limits (the forces go straight to the batch's columns)
+    Column normal_energy, normal_work, rx, ry, rz, kt, ct, stick, slide;
+    // the friction law's results: the stored spring, the dashpot's and the slip's work, the
+    // spring's energy, the sliding flag (0 or 1)
+    Column tx, ty, tz, damping, friction, energy, now;
     // the pairs' parameters: one material pair for the whole batch (the common case, a bed of one
     // material) is spread over the columns, else they are read contact by contact
     const PairParameters* p0 = P[0];
@@ -115,8 +115,8 @@ class HertzMindlin final : public ContactLaw {
       const double gn = normal_damping(beta[c], root[c]);
       const double fd = gn * rate[c];
       const double fn = fel + fd;
-      elastic[c] = fel;
-      normal[c] = fn;
+      out.elastic_normal_force[c] = fel;
+      out.normal_force[c] = fn;
       normal_energy[c] = elastic_energy(fel, delta[c]);
       normal_work[c] = fd * rate[c] * dt;
       const double len2 = sx[c] * sx[c] + sy[c] * sy[c] + sz[c] * sz[c];
@@ -166,22 +166,17 @@ class HertzMindlin final : public ContactLaw {
       tx[c] = slides ? cx : x;
       ty[c] = slides ? cy : y;
       tz[c] = slides ? cz : z;
-      fx[c] = slides ? cx * -k : f1;
-      fy[c] = slides ? cy * -k : f2;
-      fz[c] = slides ? cz * -k : f3;
+      out.fx[c] = slides ? cx * -k : f1;
+      out.fy[c] = slides ? cy * -k : f2;
+      out.fz[c] = slides ? cz * -k : f3;
       damping[c] = slides ? -0.0 : dashpot;
       friction[c] = slides ? slip : -0.0;
       energy[c] = 0.5 * k * (slides ? cx * cx + cy * cy + cz * cz : xi2);
       now[c] = slides ? 1.0 : 0.0;
     }
-    // the results into the batch's columns (copies of whole columns: vector moves)
-    std::copy_n(elastic.begin(), n, out.elastic_normal_force.begin());
-    std::copy_n(normal.begin(), n, out.normal_force.begin());
-    std::copy_n(normal_energy.begin(), n, out.normal_elastic_energy.begin());
-    std::copy_n(fx.begin(), n, out.fx.begin());
-    std::copy_n(fy.begin(), n, out.fy.begin());
-    std::copy_n(fz.begin(), n, out.fz.begin());
+    // the energies into the batch's columns
     for (std::size_t c = 0; c < n; ++c) {
+      out.normal_elastic_energy[c] = normal_energy[c];
       out.stored_energy[c] = normal_energy[c] + energy[c];
       out.damping_dissipation[c] = normal_work[c] + damping[c];
       out.friction_dissipation[c] += friction[c];

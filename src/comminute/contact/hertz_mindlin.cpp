@@ -30,8 +30,8 @@ class HertzMindlin final : public ContactLaw {
   // One contact: the same steps as a batch of one (compute_batch), so both give the same bits.
   void compute(const ContactKinematics& k, const PairParameters& p, const StateRef& s,
                ContactForces& out) const override {
-    const double a = std::sqrt(radius_squared(k));
-    const double root = std::sqrt(stiffness_mass(k, p, a));
+    const double a = std::sqrt(radius_squared(k.effective_radius, k.overlap));
+    const double root = std::sqrt(stiffness_mass(p.effective_modulus, a, k.effective_mass));
     const ProjectedSpring ps = normal_and_spring(k, p, s, a, root, out);
     const Tangential co = tangential(p, a, root, out);
     coulomb_rotated(k, co.kt, co.ct, co.lim, ps.xi * restore_length(ps.before, ps.after),
@@ -90,10 +90,10 @@ class HertzMindlin final : public ContactLaw {
     parameter(shear_root, &PairParameters::shear_normal_root);
     parameter(mu, &PairParameters::friction);
     parameter(mu_dynamic, &PairParameters::dynamic_friction);
-    // radius_squared(), stiffness_mass()
-    for (std::size_t c = 0; c < n; ++c) arg[c] = K.effective_radius[c] * delta[c];
+    for (std::size_t c = 0; c < n; ++c) arg[c] = radius_squared(K.effective_radius[c], delta[c]);
     for (std::size_t c = 0; c < n; ++c) a[c] = std::sqrt(arg[c]);
-    for (std::size_t c = 0; c < n; ++c) arg[c] = 2.0 * modulus[c] * a[c] * K.effective_mass[c];
+    for (std::size_t c = 0; c < n; ++c)
+      arg[c] = stiffness_mass(modulus[c], a[c], K.effective_mass[c]);
     for (std::size_t c = 0; c < n; ++c) root[c] = std::sqrt(arg[c]);
     // the stored springs, first carried to this step's stiffness (rescale)
     for (std::size_t c = 0; c < n; ++c) {
@@ -191,18 +191,18 @@ class HertzMindlin final : public ContactLaw {
 
  public:
   double normal_elastic_energy(const PairParameters& p, double r, double delta) const override {
-    const double a = std::sqrt(r * delta);  // radius_squared()'s root
+    const double a = std::sqrt(radius_squared(r, delta));
     return elastic_energy(elastic_force(p.effective_modulus, a, delta), delta);
   }
 
  private:
   // R* delta, whose root is the contact radius a (m^2)
-  static double radius_squared(const ContactKinematics& k) {
-    return k.effective_radius * k.overlap;
+  static double radius_squared(double effective_radius, double delta) {
+    return effective_radius * delta;
   }
-  // S_n m* = 2 E* a m*, whose root sets the dashpots (N kg/m)
-  static double stiffness_mass(const ContactKinematics& k, const PairParameters& p, double a) {
-    return 2.0 * p.effective_modulus * a * k.effective_mass;
+  // S_n m* = 2 E* a m*, whose root sets the dashpots (N kg/m); E* = `modulus` (Pa)
+  static double stiffness_mass(double modulus, double a, double effective_mass) {
+    return 2.0 * modulus * a * effective_mass;
   }
   // The normal force and its energies into `out`; the spring carried to this step's stiffness
   // (rescale) and projected onto the tangent plane. `a`: contact radius (m), `root`:

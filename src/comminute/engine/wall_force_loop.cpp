@@ -127,8 +127,7 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
         const Vec3 vwall = w.kinematics.velocity_at(hit.point);
         const Vec3 vrel = p.v[i] - cross(p.w[i], ri * nrm) - vwall;
         const double vn = dot(vrel, nrm);
-        ContactKinematics ck;
-        ck.dt = dt;
+        ContactKinematics ck;  // (its dt: the run's)
         ck.normal = nrm;
         ck.overlap = overlap;
         ck.overlap_rate = -vn;

@@ -65,7 +65,8 @@ struct Chain {
     for (std::size_t i = 0; i < p.size(); ++i) p.f[i] = p.t[i] = Vec3{};
     double elastic = 0;
     std::vector<EndedContact> ended;
-    loop.run(p, materials, pairs, nullptr, pipeline, state, 1e-6, ledger, elastic, ended);
+    ParticleRanges ranges;
+    loop.run(p, materials, pairs, nullptr, pipeline, state, 1e-6, ledger, elastic, ended, ranges);
   }
 };
 

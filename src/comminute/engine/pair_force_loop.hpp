@@ -2,8 +2,8 @@
 // The particle–particle force loop. Each thread owns a contiguous range of particle slots and the
 // pairs they own (pairs are grouped by owner), split so that the threads get equal work. A thread
 // writes the forces of its own particles directly; a pair whose other particle belongs to another
-// thread queues that particle's share, added after the loop in thread order. No atomics, no
-// per-thread copies of the force arrays, and the same thread count gives the same sums.
+// thread queues that particle's share, which the owner adds after the loop in thread order. No
+// atomics, no per-thread copies of the force arrays, and the same thread count gives the same sums.
 #include <cstdint>
 #include <vector>
 
@@ -12,6 +12,7 @@
 #include "comminute/engine/contact_pipeline.hpp"
 #include "comminute/engine/ended_contact.hpp"
 #include "comminute/engine/energy_tally.hpp"
+#include "comminute/engine/particle_ranges.hpp"
 #include "comminute/neighbor/neighbor_list.hpp"
 #include "comminute/neighbor/pruned_pairs.hpp"
 #include "comminute/particles/material.hpp"
@@ -28,10 +29,11 @@ class PairForceLoop {
   // pipeline carries a ContactStress, lists the contacts that began and, on armed steps, fills its
   // moments, counts and contact list (the other particle's share queued like its force, lists in
   // thread order). With `near` (not null) it visits only the pairs of `pairs` that `near` kept:
-  // every pair that may touch.
+  // every pair that may touch. Leaves in `ranges` the threads' particle ranges it placed.
   void run(ParticleStore& p, const MaterialTable& materials, const NeighborList& pairs,
            const PrunedPairs* near, const ContactPipeline& pipeline, ContactStateStore& state,
-           double dt, EnergyLedger& ledger, double& elastic, std::vector<EndedContact>& ended);
+           double dt, EnergyLedger& ledger, double& elastic, std::vector<EndedContact>& ended,
+           ParticleRanges& ranges);
 
  private:
   struct Shared;  // what every thread of run() reads (pair_force_loop.cpp)

@@ -29,8 +29,8 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
                         const std::vector<WallContactRecord>& candidates,
                         const WallElementLists& elements, const ContactPipeline& pipeline,
                         ContactStateStore& state, double dt, EnergyLedger& ledger, double& elastic,
-                        std::vector<WallContactRecord>& touching,
-                        std::vector<EndedContact>& ended) {
+                        std::vector<WallContactRecord>& touching, std::vector<EndedContact>& ended,
+                        const ParticleRanges& ranges) {
   const std::size_t nc = candidates.size();
   // chunks of about kChunk candidates, each ending at a particle boundary
   const std::size_t nchunk = std::max<std::size_t>(1, (nc + kChunk - 1) / kChunk);
@@ -52,13 +52,31 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
   const bool armed = cs && cs->armed();
   const bool list = armed && cs->contact_list_wanted();
   const bool rolling = pipeline.has_rolling();
-  // which thread takes which chunk does not matter: a chunk's particles are its own, and its sums
-  // are combined in chunk order below
+  // which thread takes which chunk does not change the results: a chunk's particles are its own,
+  // and its sums are combined in chunk order below. A thread takes the chunks that start in its
+  // particle range (particle_ranges.hpp), so that it works on particles whose values its core
+  // holds; with no ranges for as many threads, an equal share of the chunks.
+  auto& first_chunk = first_chunk_;
+  first_chunk.assign(static_cast<std::size_t>(nt) + 1, nchunk);
+  first_chunk[0] = 0;
+  for (int t = 1; t < nt; ++t) {
+    const auto ut = static_cast<std::size_t>(t);
+    if (ranges.threads() != nt) {
+      first_chunk[ut] = nchunk * ut / static_cast<std::size_t>(nt);
+      continue;
+    }
+    const std::size_t from = ranges.of(t, p.size()).first;
+    first_chunk[ut] = static_cast<std::size_t>(
+        std::partition_point(begin.begin() + static_cast<std::ptrdiff_t>(first_chunk[ut - 1]),
+                             begin.begin() + static_cast<std::ptrdiff_t>(nchunk),
+                             [&](std::size_t b) { return candidates[b].particle < from; }) -
+        begin.begin());
+  }
 #pragma omp parallel num_threads(nt)
-  {
-    LookUp& look = scratch_[static_cast<std::size_t>(thread_id())];
-#pragma omp for schedule(dynamic, 1) nowait
-    for (std::size_t chunk = 0; chunk < nchunk; ++chunk) {
+  for (int t = thread_id(); t < nt; t += omp_get_num_threads()) {
+    LookUp& look = scratch_[static_cast<std::size_t>(t)];
+    const auto ut = static_cast<std::size_t>(t);
+    for (std::size_t chunk = first_chunk[ut]; chunk < first_chunk[ut + 1]; ++chunk) {
       WallTally& mine = part[chunk];
       mine.energy = {};
       mine.force.assign(walls.size(), Vec3{});

@@ -11,11 +11,16 @@
 #   CASES="settle20k" bench/run_benchmarks.sh
 #   CASES="drum20k" bench/run_benchmarks.sh
 #   WARM=20 STEPS=20 CASES="drum20k" bench/run_benchmarks.sh   smoke test of the chain (default 1000, 2000)
+# Every code's one-thread runs are pinned to the same core (PIN1, default 0; PIN1= leaves them to
+# the scheduler): the cores of a VM need not be alike (on one 2-core VM one core ran the drum 27 %
+# slower than the other, bench/RESULTS.md), and an unpinned run lands on either. Two-thread runs
+# bind one thread per core (OMP_PROC_BIND=true), as the peers' MPI ranks are bound by mpirun.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
 peers=${PEERS_DIR:-$(cd "$root/../shared/bench/peers" && pwd)}
 reps=${REPS:-1}
+pin1=${PIN1-0}
 warm=${WARM:-1000}
 steps=${STEPS:-2000}
 cases=${CASES:-"settle20k settle100k dense100k"}
@@ -52,14 +57,15 @@ deck_of() {  # the peers' input deck: in.drum for the drum, in.settle for the fl
 for rep in $(seq 1 "$reps"); do
   for c in $cases; do
     for np in 1 2; do
+      pin=""; [ "$np" -eq 1 ] && [ -n "$pin1" ] && pin="taskset -c $pin1"
       log=bench/logs/comminute_${c}_p${np}_r${rep}.log
-      OMP_NUM_THREADS=$np build/bench/bench_dem_throughput "$(toml_of "$c")" "$warm" "$steps" > "$log" 2>&1
+      OMP_PROC_BIND=true OMP_NUM_THREADS=$np $pin build/bench/bench_dem_throughput "$(toml_of "$c")" "$warm" "$steps" > "$log" 2>&1
       echo "comminute $c $np: $(tail -1 "$log")"
       for code in liggghts lammps; do
         log=$root/bench/logs/${code}_${c}_p${np}_r${rep}.log
         exe=liggghts; [ $code = lammps ] && exe="lmp -nocite"
         mpi=""; [ "$np" -gt 1 ] && mpi="mpirun --allow-run-as-root -np $np"
-        (cd "$peers/$code" && OMP_NUM_THREADS=1 /usr/bin/time -v -o "$log.time" $mpi $exe -in "$(deck_of "$c")" \
+        (cd "$peers/$code" && OMP_NUM_THREADS=1 $pin /usr/bin/time -v -o "$log.time" $mpi $exe -in "$(deck_of "$c")" \
           -var data "$(data_of "$c")" -var warm "$warm" -var steps "$steps" -log none) > "$log" 2>&1 || echo "FAILED: $log"
         echo "$code $c $np: $(grep 'Loop time' "$log" | tail -1)"
       done

@@ -148,8 +148,7 @@ class Simulation {
   std::size_t n_owned_ = 0;  // owned particles at the last force computation
   PairForceLoop pair_loop_;
   WallForceLoop wall_loop_;
-  ParticleRanges
-      ranges_;  // the threads' particles in the per-particle loops (placed by the pair loop)
+  ParticleRanges ranges_;  // each thread's particles, placed by the pair loop
   std::vector<WallContactRecord> wall_contacts_;  // touching now
   std::vector<EndedContact> ended_contacts_;      // ended in the last force computation
   bool forces_cleared_ = false;

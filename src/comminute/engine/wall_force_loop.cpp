@@ -55,7 +55,8 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
   // which thread takes which chunk does not change the results: a chunk's particles are its own,
   // and its sums are combined in chunk order below. A thread takes the chunks that start in its
   // particle range (particle_ranges.hpp), so that it works on particles whose values its core
-  // holds; with no ranges for as many threads, an equal share of the chunks.
+  // holds; with no ranges for as many threads, an equal share of the chunks. (A chunk may start at
+  // the end, nc, when the last particle's candidates filled the chunk before.)
   auto& first_chunk = first_chunk_;
   first_chunk.assign(static_cast<std::size_t>(nt) + 1, nchunk);
   first_chunk[0] = 0;
@@ -67,9 +68,10 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
     }
     const std::size_t from = ranges.of(t, p.size()).first;
     first_chunk[ut] = static_cast<std::size_t>(
-        std::partition_point(begin.begin() + static_cast<std::ptrdiff_t>(first_chunk[ut - 1]),
-                             begin.begin() + static_cast<std::ptrdiff_t>(nchunk),
-                             [&](std::size_t b) { return candidates[b].particle < from; }) -
+        std::partition_point(
+            begin.begin() + static_cast<std::ptrdiff_t>(first_chunk[ut - 1]),
+            begin.begin() + static_cast<std::ptrdiff_t>(nchunk),
+            [&](std::size_t b) { return b < nc && candidates[b].particle < from; }) -
         begin.begin());
   }
 #pragma omp parallel num_threads(nt)

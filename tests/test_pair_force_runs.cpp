@@ -65,8 +65,7 @@ struct Chain {
     for (std::size_t i = 0; i < p.size(); ++i) p.f[i] = p.t[i] = Vec3{};
     double elastic = 0;
     std::vector<EndedContact> ended;
-    ParticleRanges ranges;
-    loop.run(p, materials, pairs, nullptr, pipeline, state, 1e-6, ledger, elastic, ended, ranges);
+    loop.run(p, materials, pairs, nullptr, pipeline, state, 1e-6, ledger, elastic, ended);
   }
 };
 

@@ -67,7 +67,7 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
   const double *R = p.radius.data(), *M = p.mass.data(), *I = p.inertia.data();
   const std::uint16_t* mat = p.material.data();
   const std::uint32_t *first = pairs.first.data(), *second = pairs.second.data();
-  const std::uint32_t own0 = owner_begin_[t], own1 = owner_begin_[t + 1];
+  const std::uint32_t own0 = ranges_.begin()[t], own1 = ranges_.begin()[t + 1];
   auto& queued = cross_[t];
   queued.clear();
   auto& separated = ended_[t];
@@ -234,14 +234,14 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
 void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const NeighborList& pairs,
                         const PrunedPairs* near, const ContactPipeline& pipeline,
                         ContactStateStore& state, double dt, EnergyLedger& ledger, double& elastic,
-                        std::vector<EndedContact>& ended, ParticleRanges& ranges) {
+                        std::vector<EndedContact>& ended) {
   const std::size_t n = p.size();
   const std::size_t npairs = pairs.size();
   const int nt = npairs >= 2 * kParallelMin ? max_threads() : 1;
   // the threads split the pairs by cost (engine/pair_split.hpp) at the start of their region: the
   // cost of each block of pairs is summed by the threads together, then one places the split
   auto& split = split_;
-  auto& owner_begin = owner_begin_;
+  auto& owner_begin = ranges_.begin();
   owner_begin.assign(static_cast<std::size_t>(nt) + 1, 0);
   owner_begin[static_cast<std::size_t>(nt)] = static_cast<std::uint32_t>(n);
   const std::size_t blocks = pair_split_blocks(npairs);
@@ -307,7 +307,6 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
           }
     }
   }
-  ranges.begin() = owner_begin;
   for (const auto& tl : tally) tl.book(ledger, elastic);
   for (const auto& list : ended_) ended.insert(ended.end(), list.begin(), list.end());
   if (cs)

@@ -29,16 +29,18 @@ class PairForceLoop {
   // pipeline carries a ContactStress, lists the contacts that began and, on armed steps, fills its
   // moments, counts and contact list (the other particle's share queued like its force, lists in
   // thread order). With `near` (not null) it visits only the pairs of `pairs` that `near` kept:
-  // every pair that may touch. Leaves in `ranges` the threads' particle ranges it placed.
+  // every pair that may touch.
   void run(ParticleStore& p, const MaterialTable& materials, const NeighborList& pairs,
            const PrunedPairs* near, const ContactPipeline& pipeline, ContactStateStore& state,
-           double dt, EnergyLedger& ledger, double& elastic, std::vector<EndedContact>& ended,
-           ParticleRanges& ranges);
+           double dt, EnergyLedger& ledger, double& elastic, std::vector<EndedContact>& ended);
+  // The threads' particle ranges this loop placed in its last run (particle_ranges.hpp), which
+  // the step's other per-particle loops follow.
+  const ParticleRanges& ranges() const { return ranges_; }
 
  private:
   struct Shared;  // what every thread of run() reads (pair_force_loop.cpp)
-  // One thread's share of run(): the pairs owned by particles [owner_begin_[t],
-  // owner_begin_[t + 1]), or the pruned ones among them. In AVX-512, AVX2 and baseline versions
+  // One thread's share of run(): the pairs owned by particles [ranges_.begin()[t],
+  // ranges_.begin()[t + 1]), or the pruned ones among them. In AVX-512, AVX2 and baseline versions
   // (core/vector_clones.hpp).
   COMMINUTE_VECTOR_CLONES void thread_pairs(const Shared& s, int t);
 
@@ -61,7 +63,7 @@ class PairForceLoop {
   std::vector<StressPart> stress_;
   // reused from step to step: the threads' pair ranges, their first owned particles, their energy
   std::vector<std::size_t> split_;
-  std::vector<std::uint32_t> owner_begin_;
+  ParticleRanges ranges_;                  // the threads' first owned particles, and the end
   std::vector<std::uint64_t> block_cost_;  // the cost of each block of pairs (pair_split.hpp)
   std::vector<EnergyTally> tally_;
 };

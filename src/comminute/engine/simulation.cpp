@@ -47,8 +47,8 @@ void Simulation::run(std::uint64_t n) {
 void Simulation::step() {
   if (!is_setup_) setup();
   if (step_control) dt = step_control->decide(particles, materials);
-  const auto drift = VelocityVerlet::kick_drift(particles, dt, gravity,
-                                                tracker_.displacement_reference(), ranges_);
+  const auto drift = VelocityVerlet::kick_drift(
+      particles, dt, gravity, tracker_.displacement_reference(), pair_loop_.ranges());
   tracker_.moved(particles, drift.from_build2, drift.step2, options.skin);
   forces_cleared_ = true;
   for (std::size_t k = 0; k < walls.size(); ++k) {
@@ -61,7 +61,7 @@ void Simulation::step() {
   for (auto& m : modules) m->post_force(*this);
   if (ContactStress* cs = contacts_.stress()) cs->disarm();
   particles.drop_ghosts();
-  const bool bad = VelocityVerlet::kick(particles, dt, ranges_) || !drift.finite;
+  const bool bad = VelocityVerlet::kick(particles, dt, pair_loop_.ranges()) || !drift.finite;
   ++step_count;
   if (bad) report_non_finite();
   for (auto& m : modules) m->end_of_step(*this);
@@ -148,7 +148,7 @@ void Simulation::compute_forces() {
   if (rebuilt && ghosts_.active()) ghosts_.turn_carried(tracker_.pairs().carried(), pair_state_);
   if (rebuilt) tracker_.pairs().release_carry();  // spent: not resident until the next rebuild
   if (!forces_cleared_)  // set-up, or particles inserted/removed after the drift
-    VelocityVerlet::start_forces(particles, gravity, ranges_);
+    VelocityVerlet::start_forces(particles, gravity, pair_loop_.ranges());
   forces_cleared_ = false;
   for (auto& w : walls) {
     w->force = {};
@@ -160,11 +160,11 @@ void Simulation::compute_forces() {
   if (stress) stress->begin(particles.size());
   const PrunedPairs* near = tracker_.near_pairs(particles, options, pair_state_.active);
   pair_loop_.run(particles, materials, tracker_.pairs(), near, contacts_, pair_state_, dt, ledger,
-                 elastic_energy_, ended_contacts_, ranges_);
+                 elastic_energy_, ended_contacts_);
   const WallCandidates& candidates = tracker_.wall_candidates();
   wall_loop_.run(particles, materials, walls, candidates.records(), candidates.elements(),
                  contacts_, wall_state_, dt, ledger, elastic_energy_, wall_contacts_,
-                 ended_contacts_, ranges_);
+                 ended_contacts_, pair_loop_.ranges());
   if (ghosts_.active()) ghosts_.fold(particles);
   if (stress && ghosts_.active())
     stress->fold(particles.owned(), particles.ghost_owner, [this](std::size_t g, const Vec3& v) {

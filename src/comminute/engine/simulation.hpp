@@ -19,7 +19,6 @@
 #include "comminute/engine/module.hpp"
 #include "comminute/engine/pair_force_loop.hpp"
 #include "comminute/engine/pair_tracker.hpp"
-#include "comminute/engine/particle_ranges.hpp"
 #include "comminute/engine/time_step_control.hpp"
 #include "comminute/engine/wall_contact.hpp"
 #include "comminute/engine/wall_force_loop.hpp"
@@ -148,7 +147,6 @@ class Simulation {
   std::size_t n_owned_ = 0;  // owned particles at the last force computation
   PairForceLoop pair_loop_;
   WallForceLoop wall_loop_;
-  ParticleRanges ranges_;  // each thread's particles, placed by the pair loop
   std::vector<WallContactRecord> wall_contacts_;  // touching now
   std::vector<EndedContact> ended_contacts_;      // ended in the last force computation
   bool forces_cleared_ = false;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "comminute/core/archive.hpp"
+#include "comminute/core/memory.hpp"
 
 namespace comminute::breakage {
 
@@ -59,6 +60,12 @@ class EventLog {
 
   // A fragment of the breakage being replaced.
   void add_fragment(const FragmentRecord& f) { fragments_.push_back(f); }
+  // Room for this many more breakages and fragments, their pages resident (core/memory.hpp): the
+  // log grows by a burst of replacements at a time.
+  void make_room(std::size_t breakages, std::size_t fragments) {
+    make_resident(records_, records_.size() + breakages);
+    make_resident(fragments_, fragments_.size() + fragments);
+  }
 
   const std::vector<EventRecord>& records() const { return records_; }
   const std::vector<FragmentRecord>& fragments() const { return fragments_; }

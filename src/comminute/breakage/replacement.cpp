@@ -9,6 +9,7 @@
 #include "comminute/breakage/contact_at_rest.hpp"
 #include "comminute/breakage/fragment_growth.hpp"
 #include "comminute/breakage/parallel_filter.hpp"
+#include "comminute/core/memory.hpp"
 #include "comminute/core/parallel.hpp"
 #include "comminute/core/units.hpp"
 #include "comminute/fracture/rayleigh_time.hpp"
@@ -45,7 +46,9 @@ void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
     std::unordered_map<std::uint64_t, std::size_t> slot_of;
     const std::unordered_set<std::uint64_t> wanted(broken_ids_.begin(), broken_ids_.end());
     // 0, or (once the outcomes below are laid out) 1 + the parent's outcome
-    std::vector<std::uint32_t> batch(p.size(), 0);
+    std::vector<std::uint32_t>& batch = batch_;
+    make_resident(batch, p.size());  // (core/memory.hpp)
+    batch.assign(p.size(), 0);
     // (the scans of the store and of the pair list run on all threads; their hits come back in
     // slot and pair order, so what follows is the same as after serial scans)
     for (const std::uint32_t i : parallel_filter(p.size(), [&](std::size_t s) {
@@ -58,7 +61,9 @@ void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
     const auto& nl = sim.pairs();
     // 1 for a parent's slot of the list; a slot of the list may be a periodic ghost (no longer in
     // the store): its owner stands in. The scan of the list then reads one byte per slot.
-    std::vector<std::uint8_t> parent_slot(p.owned() + sim.ghost_count());
+    std::vector<std::uint8_t>& parent_slot = parent_slot_;
+    make_resident(parent_slot, p.owned() + sim.ghost_count());
+    parent_slot.resize(p.owned() + sim.ghost_count());
     const auto n_slots = static_cast<std::ptrdiff_t>(parent_slot.size());
     const bool threaded = parent_slot.size() >= kParallelMin;
 #pragma omp parallel for schedule(static) if (threaded)
@@ -113,6 +118,7 @@ void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
     // fragments given slots and ids in that order and written (all threads), their books kept in
     // that order (serial).
     std::vector<Outcome> outcomes;
+    outcomes.reserve(broken_ids_.size());
     for (std::size_t b = 0; b < broken_ids_.size(); ++b) {
       const auto found_parent = slot_of.find(broken_ids_[b]);
       if (found_parent == slot_of.end()) continue;  // left through an outlet while it waited
@@ -147,6 +153,7 @@ void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
       outcomes[q].first_id += first_id;
       write(sim, ctx, outcomes[q], in_slot);
     });
+    ctx.log.make_room(outcomes.size(), ids);
     for (const Outcome& o : outcomes) book_fragments(sim, ctx, o);
     parallel_for_each(outcomes.size(), [&](std::size_t q) {
       Outcome& o = outcomes[q];

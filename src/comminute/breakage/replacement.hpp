@@ -114,6 +114,11 @@ class Replacement {
   std::vector<EventRecord> broken_records_;
   std::vector<NewFragment> fragments_added_;  // put in the store this step
   std::vector<std::uint32_t> renewed_;        // parents' slots a fragment took this step
+  // per slot, kept from step to step (assigned anew each step; large arrays reallocated every
+  // step would take fresh pages, a page fault each): 0, or 1 + the parent's outcome; 1 for a
+  // parent's slot of the pair list
+  std::vector<std::uint32_t> batch_;
+  std::vector<std::uint8_t> parent_slot_;
 };
 
 }  // namespace comminute::breakage

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "comminute/breakage/parallel_filter.hpp"
+#include "comminute/core/memory.hpp"
 #include "comminute/core/parallel.hpp"
 #include "comminute/engine/parallel_threshold.hpp"
 #include "comminute/engine/simulation.hpp"
@@ -54,7 +55,8 @@ void StressingEvents::clear(ParticleStore& p, std::size_t s) const {
 void StressingEvents::gather_loads(const Simulation& sim) {
   const auto& p = sim.particles;
   const std::size_t n = p.size();
-  contact_load_.resize(n);  // reset by the scatter below, each thread its own slots
+  make_resident(contact_load_, n);  // (it grows with the fragments: core/memory.hpp)
+  contact_load_.resize(n);          // reset by the scatter below, each thread its own slots
   const auto& nl = sim.pairs();
   const ContactStateStore& pairs = sim.pair_state();
   const LoadingRecord& loading = *sim.contacts().loading();

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "comminute/core/error.hpp"
+#include "comminute/core/memory.hpp"
 #include "comminute/core/parallel.hpp"
 
 namespace comminute {
@@ -102,10 +103,15 @@ void ContactStateStore::clear(std::size_t k) {
 
 void ContactStateStore::renew(const std::vector<std::uint32_t>& fresh, std::size_t size) {
   for (const std::uint32_t k : fresh) clear(k);
-  active.resize(size, 0);
-  for (auto& c : vec3_) c.data.resize(size, Vec3{});
-  for (auto& c : f32_) c.data.resize(size, 0.0f);
-  for (auto& c : f64_) c.data.resize(size, 0.0);
+  // (the pairs of appended fragments: their pages made resident in one call, core/memory.hpp)
+  const auto grow = [size](auto& column, auto fresh_value) {
+    make_resident(column, size);
+    column.resize(size, fresh_value);
+  };
+  grow(active, std::uint8_t{0});
+  for (auto& c : vec3_) grow(c.data, Vec3{});
+  for (auto& c : f32_) grow(c.data, 0.0f);
+  for (auto& c : f64_) grow(c.data, 0.0);
   refresh();
 }
 

@@ -1,6 +1,9 @@
 #include "comminute/core/memory.hpp"
 
+#include <sys/mman.h>
 #include <unistd.h>
+
+#include <cstdint>
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
@@ -21,6 +24,20 @@ bool exceeds_memory(double bytes) {
 void give_back_freed_arrays() {
 #ifdef __GLIBC__
   mallopt(M_MMAP_THRESHOLD, 256 * 1024);
+#endif
+}
+
+void prefault(void* p, std::size_t bytes) {
+#ifdef MADV_POPULATE_WRITE
+  static const auto page = static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
+  const auto begin = reinterpret_cast<std::uintptr_t>(p);
+  const std::uintptr_t first = (begin + page - 1) & ~(page - 1),
+                       last = (begin + bytes) & ~(page - 1);
+  // (the result is not needed: where the call is refused, the pages fault in when written)
+  if (last > first) ::madvise(reinterpret_cast<void*>(first), last - first, MADV_POPULATE_WRITE);
+#else
+  (void)p;
+  (void)bytes;
 #endif
 }
 

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "comminute/core/error.hpp"
+#include "comminute/core/memory.hpp"
 
 namespace comminute {
 
@@ -178,6 +179,8 @@ void PairTracker::reach_of_appended(const ParticleStore& p, std::size_t n_kept,
                                     std::vector<std::uint32_t>& tracked) {
   // a fragment's reach sphere at "build" is where it is now at its final size: growth up to that
   // size then never invalidates the list; the pruned list keeps all its pairs until the next prune
+  make_resident(x_at_build_, p.size());  // (core/memory.hpp)
+  make_resident(r_at_build_, p.size());
   x_at_build_.resize(p.size());
   r_at_build_.resize(p.size());
   for (std::size_t s = n_kept; s < p.size(); ++s) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "comminute/core/memory.hpp"
 #include "comminute/core/parallel.hpp"
 #include "comminute/neighbor/cell_grid.hpp"
 
@@ -377,6 +378,10 @@ void NeighborList::append_rows(std::size_t n_kept, std::size_t n, const std::vec
     });
     std::sort(row.begin(), row.end());
   }
+  std::size_t appended = 0;
+  for (const auto& row : rows) appended += row.size();
+  make_resident(first, first.size() + appended);  // (core/memory.hpp)
+  make_resident(second, second.size() + appended);
   for (std::size_t q = 0; q < n_new; ++q)
     for (std::uint32_t j : rows[q]) {
       first.push_back(static_cast<std::uint32_t>(n_kept + q));

@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "comminute/core/error.hpp"
+#include "comminute/core/memory.hpp"
 #include "comminute/core/units.hpp"
 
 namespace comminute {
@@ -83,8 +84,14 @@ void ParticleStore::extend(std::size_t n) {
   if (!ghost_owner.empty()) throw Error("ParticleStore::extend() with ghosts present");
   const std::size_t to = size() + n;
   // threaded from a size where the copy of a reallocation and the first touch of fresh pages
-  // outweigh starting the threads
-  each_array([to](auto& a, const auto& fresh) { a.resize(to, fresh); }, to >= 16384);
+  // outweigh starting the threads; the new elements' pages made resident in one call per array
+  // (core/memory.hpp: fragments are appended every step of a breakage run)
+  each_array(
+      [to](auto& a, const auto& fresh) {
+        make_resident(a, to);
+        a.resize(to, fresh);
+      },
+      to >= 16384);
 }
 
 namespace {

@@ -135,6 +135,7 @@ void refill(std::vector<T>& data, std::size_t size, T fresh) {
     std::vector<T>().swap(data);
     data.reserve(size + size / 8);
   }
+  make_resident(data, size);  // (fresh pages: core/memory.hpp)
   data.assign(size, fresh);
 }
 
@@ -189,7 +190,9 @@ void carry_column(std::vector<T>& data, SwapRule rule, const std::vector<std::ui
   const int nt = std::max(m, size) >= kThreadedCarry ? max_threads() : 1;
   const auto sm = static_cast<std::ptrdiff_t>(m), ssize = static_cast<std::ptrdiff_t>(size);
   if (!rising || size > data.capacity()) {
-    std::vector<T> kept(m);
+    std::vector<T> kept;
+    make_resident(kept, m);  // (fresh pages: core/memory.hpp)
+    kept.resize(m);
 #pragma omp parallel for schedule(static) num_threads(nt)
     for (std::ptrdiff_t e = 0; e < sm; ++e)
       kept[e] = reversed[e] ? swapped(data[from[e]], rule) : data[from[e]];

@@ -22,12 +22,15 @@ void give_back_freed_arrays();
 
 // Makes the whole pages inside [p, p + bytes) resident now, in one system call (Linux 5.14 and
 // later: MADV_POPULATE_WRITE), instead of one page fault each when first written. On the 2-core VM
-// of bench/RESULTS.md a fault costs about 10 us, a page populated this way 0.5 us. The contents do
-// not change. Nothing for less than a page, on other systems or on older kernels.
+// of bench/RESULTS.md (bench/page_fault_cost) a fresh page's first write costs 11-14 us, made
+// resident this way first 6-7 us (the call, and the host's share at the first write, which no call
+// in the guest avoids), a reused page's 0.03 us. The contents do not change. Nothing for less than
+// a page, on other systems or on older kernels.
 void prefault(void* p, std::size_t bytes);
 
 // Room for n elements in v, their pages resident (prefault) before they are written: for arrays
-// that grow during a run (fragments appended to the particles, their pairs to the list). A vector
+// that grow during a run (fragments appended to the particles, their pairs to the list) and for
+// fresh ones about to be filled (the temporaries of a neighbour-list rebuild). A vector
 // that must grow does so as push_back would (at least doubling), the pages of its first n
 // elements made resident before they move in; else the pages between its size and n.
 template <class T, class A>

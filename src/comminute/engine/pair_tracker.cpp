@@ -150,6 +150,8 @@ void PairTracker::rebuild(ParticleStore& p, const Walls& walls, SimulationOption
   // fresh pages costs a page fault per 4 KiB, more than the copy (bench_breakage)
   make_room(x_at_build_, p.size());
   make_room(r_at_build_, p.size());
+  make_resident(x_at_build_, p.size());  // (fresh pages: core/memory.hpp)
+  make_resident(r_at_build_, p.size());
   x_at_build_.assign(p.x.begin(), p.x.end());
   r_at_build_.assign(p.radius.begin(), p.radius.end());
   reach_tracked_.clear();

@@ -43,9 +43,9 @@ void NeighborList::build(const ParticleStore& p, double skin, const std::vector<
   saved_.clear();
   old_labelled_ = labels_.size() == ids_.size();
   const std::size_t n_keep = std::min(keep.size(), first.size());
-  saved_.reserve(static_cast<std::size_t>(
-      std::count_if(keep.begin(), keep.begin() + static_cast<std::ptrdiff_t>(n_keep),
-                    [](std::uint8_t k) { return k != 0; })));
+  make_resident(saved_, static_cast<std::size_t>(std::count_if(
+                            keep.begin(), keep.begin() + static_cast<std::ptrdiff_t>(n_keep),
+                            [](std::uint8_t k) { return k != 0; })));  // (core/memory.hpp)
   for (std::size_t k = 0; k < n_keep; ++k)
     if (keep[k]) saved_.push_back({first[k], second[k]});
   // slots unchanged since the last build (no sort, insertion or removal, no periodic images): a
@@ -112,9 +112,11 @@ void NeighborList::build(const ParticleStore& p, double skin, const std::vector<
   const std::size_t share = last_pairs_ / static_cast<std::size_t>(nt);
   first.reserve(last_pairs_ + last_pairs_ / 4);
   second.reserve(last_pairs_ + last_pairs_ / 4);
-  for (int t = 1; t < nt; ++t) {
+  for (int t = 1; t < nt; ++t) {  // (the pages of the share resident at once: core/memory.hpp)
     tf[t].reserve(share + share / 4);
     ts[t].reserve(share + share / 4);
+    prefault(tf[t].data(), share * sizeof(std::uint32_t));
+    prefault(ts[t].data(), share * sizeof(std::uint32_t));
   }
 #pragma omp parallel num_threads(nt)
   {
@@ -198,9 +200,11 @@ void NeighborList::plan_carry(const ParticleStore& p, const std::vector<std::uin
   auto& slot = slot_of_id_;
   auto& slot_by_id = slot_by_id_;
   if (direct) {
+    make_resident(slot_by_id, id_hi - id_lo + 1);  // (core/memory.hpp)
     slot_by_id.assign(id_hi - id_lo + 1, none);
     for (std::uint32_t i = 0; i < n; ++i) slot_by_id[p.id[i] - id_lo] = i;
   } else {
+    make_resident(slot, n);
     slot.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) slot[i] = {p.id[i], i};
     std::sort(slot.begin(), slot.end());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "comminute/core/memory.hpp"
 #include "comminute/core/parallel.hpp"
 
 namespace comminute {
@@ -17,6 +18,9 @@ void PrunedPairs::select(std::size_t n, std::vector<std::uint32_t>& out, Keeps k
     const auto unt = static_cast<std::size_t>(nt);
     auto& part = parts_[t];
     part.clear();
+    // room for every pair of the range, its pages resident at once (core/memory.hpp): filled by
+    // push_back from empty, the array would reallocate and fault in its pages one by one
+    make_resident(part, n * (t + 1) / unt - n * t / unt);
     keeps(n * t / unt, n * (t + 1) / unt, part);
     offsets_[t + 1] = part.size();
 #pragma omp barrier

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cstdint>
+#include <string>
 
 #include "comminute/core/error.hpp"
 
@@ -65,9 +66,19 @@ void check_non_ascii_placement(std::string_view text, const std::string& name) {
   // start of a line); elsewhere (e.g. right after a malformed number) toml++ keeps classifying the
   // characters that follow as code, so they must stay ASCII.
   char previous = '\n';  // last non-blank character of code
-  auto opens_string = [&previous] {
+  // Whether code is in a value (from '=' to the end of its line, or of its brackets): there a '.'
+  // belongs to a number or a malformed value, never to a dotted key, so a quote after it opens no
+  // string (`x = 0."...` is a malformed float to toml++). `open`: the value's unclosed '[' and
+  // '{'; in an inline table a key follows '{' and ','.
+  bool value = false;
+  std::string open;
+  auto opens_string = [&] {
     return previous == '\n' || previous == '=' || previous == '[' || previous == ',' ||
-           previous == '{' || previous == '.';
+           previous == '{' || (previous == '.' && !value);
+  };
+  auto end_of_line = [&] {
+    previous = '\n';
+    if (open.empty()) value = false;
   };
   auto at = [&](std::size_t i, std::string_view what) {
     return text.substr(i, what.size()) == what;
@@ -80,6 +91,19 @@ void check_non_ascii_placement(std::string_view text, const std::string& name) {
     switch (in) {
       case In::code:
         if (non_ascii) refuse("non-ASCII character outside a string or comment");
+        if (c == '=') {
+          value = true;
+        } else if (value && (c == '[' || c == '{')) {
+          open.push_back(c);
+          value = c == '[';
+        } else if (!open.empty() && (c == ']' || c == '}')) {
+          open.pop_back();
+          value = true;
+        } else if (c == ',' && !open.empty()) {
+          value = open.back() == '[';
+        } else if (c == '\n' && open.empty()) {
+          value = false;
+        }
         if ((c == '"' || c == '\'') && !opens_string()) {
           previous = c;
           break;
@@ -106,7 +130,7 @@ void check_non_ascii_placement(std::string_view text, const std::string& name) {
       case In::comment:
         if (c == '\n') {
           in = In::code;
-          previous = '\n';
+          end_of_line();
         }
         break;
       case In::basic:
@@ -127,7 +151,7 @@ void check_non_ascii_placement(std::string_view text, const std::string& name) {
         }
         if (in == In::basic && (c == '"' || c == '\n')) {
           in = In::code;
-          if (c == '\n') previous = '\n';
+          if (c == '\n') end_of_line();
         }
         if (in == In::ml_basic && at(i, "\"\"\"")) {
           while (i + 1 < text.size() && text[i + 1] == '"') ++i;  // up to two quotes of content
@@ -137,7 +161,7 @@ void check_non_ascii_placement(std::string_view text, const std::string& name) {
       case In::literal:
         if (c == '\'' || c == '\n') {
           in = In::code;
-          if (c == '\n') previous = '\n';
+          if (c == '\n') end_of_line();
         }
         break;
       case In::ml_literal:

@@ -25,6 +25,12 @@ rows=$(($(wc -l < "$work/output/fit.csv") - 1))
 [ "$rows" -eq 49 ] || { echo "fit.csv has $rows rows"; exit 1; }
 grep -q "objective" "$work/log" || { cat "$work/log"; exit 1; }
 
+# `comminute check` reads the fit as `calibrate` does: the compression at the case's values runs
+# once and must reach the end of the measured curve
+"$bin" check "$work/grain_compression.toml" > "$work/log" 2>&1 || { cat "$work/log"; exit 1; }
+grep -q "valid grain compression calibration" "$work/log" || { cat "$work/log"; exit 1; }
+grep -q "2 free parameter(s), 49 measured point(s)" "$work/log" || { cat "$work/log"; exit 1; }
+
 refused() {  # refused KEY FILE [ARGS]: the case is refused with exit code 2 naming KEY
   local key="$1" file="$2" rc=0
   shift 2
@@ -34,4 +40,8 @@ refused() {  # refused KEY FILE [ARGS]: the case is refused with exit code 2 nam
 refused "calibration" "$src/examples/pbm/calibrate_carbon_black.toml" --evaluate
 sed -e 's/^platen = "platen"/platen = "lid"/' "$work/grain_compression.toml" > "$work/bad.toml"
 refused "calibration.compression.platen" "$work/bad.toml" --evaluate
+rc=0
+"$bin" check "$work/bad.toml" > "$work/msg" 2>&1 || rc=$?
+[ "$rc" -eq 2 ] && grep -q "calibration.compression.platen" "$work/msg" ||
+  { echo "check of a missing platen: rc $rc"; cat "$work/msg"; exit 1; }
 echo "grain calibration CLI: ok"

@@ -68,6 +68,36 @@ expect_error "CSV with a non-number" bad_value.toml "feed2.csv:3: key 'initial.f
 sed -e 's/^spacing = "geometric".*/spacing = "geometric"\nratioo = 2.0/' batch_grinding.toml > bad_key.toml
 expect_error "unknown key" bad_key.toml "key 'grid.ratioo': unknown key (did you mean 'ratio'?)"
 
+# --- `comminute check` reads a population balance as `pbm` does (no run, no output folder), a
+# fit as `calibrate` does, and refuses what they refuse, with the same message
+for c in batch_grinding carbon_black ball_mill_spectrum ball_mill_ufrj calibrate_carbon_black; do
+  out=$("$bin" check $c.toml 2>&1)
+  rc=$?
+  check "check $c (rc $rc)" test $rc -eq 0
+  check "check $c says what it is ($out)" grep -qF "$c.toml: valid population-balance case" <<<"$out"
+done
+mkdir fresh && cp batch_grinding.toml fresh/
+"$bin" check fresh/batch_grinding.toml > /dev/null 2>&1
+check "check writes no output folder" test -z "$(ls -A fresh | grep -v '^batch_grinding.toml$')"
+out=$("$bin" check calibrate_carbon_black.toml 2>&1)
+check "check of a fit names its command and free parameters ($out)" \
+  grep -qF "(comminute calibrate)" <<<"$out"
+check "check of a fit counts its free parameters" grep -qF "6 free parameter(s)" <<<"$out"
+check_refuses() {  # check_refuses <description> <case> <text that must appear>
+  out=$("$bin" check "$2" 2>&1)
+  rc=$?
+  check "check, $1: exit code 2 (got $rc)" test $rc -eq 2
+  check "check, $1: message names '$3' ($out)" grep -qF -- "$3" <<<"$out"
+}
+check_refuses "non-monotone grid" bad_grid.toml \
+  "bad_grid.toml:$(grep -n '^edges' bad_grid.toml | cut -d: -f1): key 'grid.edges'"
+check_refuses "unknown key" bad_key.toml "key 'grid.ratioo': unknown key (did you mean 'ratio'?)"
+sed -e 's/^starts = 15/starts = 15\nstartz = 3/' calibrate_carbon_black.toml > bad_cal_key.toml
+check_refuses "unknown key of a fit" bad_cal_key.toml "key 'calibration.startz': unknown key"
+# a DEM case without [simulation] and without a size grid is still read as a DEM case
+printf '[contact]\nmodel = "hertz_mindlin"\n' > no_simulation.toml
+check_refuses "DEM case without [simulation]" no_simulation.toml "missing required key 'simulation'"
+
 # --- the ball-mill rates (docs/pbm.md): capece's impact distribution must sum to one; the
 # energy-spectrum keys belong to the _variant rates; the old names are unknown models
 sed -e '$s/,[^,]*$/,0.5/' ball_mill_impacts.csv > bad_impacts.csv   # the last row's probability

@@ -85,8 +85,9 @@ std::function<int()> setup_check(CLI::App& sub) {
   };
 }
 
-const bool registered =
-    add_command({"check", "Validate a case file without running it", &setup_check});
+const bool registered = add_command(
+    {"check", "Validate a case file (of run, pbm, calibrate or couple) without running it",
+     &setup_check});
 
 }  // namespace
 }  // namespace comminute::app

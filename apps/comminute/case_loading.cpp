@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 #include <unistd.h>
 
+#include "case_kind.hpp"
 #include "comminute/core/error.hpp"
 #include "comminute/io/case/bonds_case.hpp"
 #include "comminute/io/case/breakage_case.hpp"
@@ -57,6 +58,7 @@ void check_output_directory(const LoadedCase& c, const std::string& option) {
 }
 
 LoadedCase load_dem_case(const std::filesystem::path& path) {
+  require_case_kind(path, {CaseKind::dem});
   CaseFile file = CaseFile::load(path);
   io::DemCase dem = io::build_dem_case(file.root());
   const auto output_table = file.root().optional_table("output");

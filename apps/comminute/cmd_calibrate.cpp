@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "case_kind.hpp"
 #include "command.hpp"
 #include "comminute/core/csv_table.hpp"
 #include "comminute/core/error.hpp"
@@ -175,6 +176,9 @@ std::function<int()> setup_calibrate(CLI::App& sub) {
   sub.add_flag("--evaluate", *evaluate,
                "grain compression mode: no fit, run the compression at the case's own values");
   return [file, no_plots, evaluate] {
+    // (a population balance without [calibration] is refused by its reader: [calibration] missing)
+    require_case_kind(*file, {CaseKind::grain_fit, CaseKind::population_balance_fit,
+                              CaseKind::population_balance});
     // loaded once: the mode is read from it, then the chosen mode reads the rest
     const auto cf = CaseFile::load(*file);
     if (io::is_grain_calibration(cf.root())) return calibrate_grain(cf, *evaluate);

@@ -1,10 +1,11 @@
 // `comminute check case.toml`: validates a case file without running it, whichever command runs
 // it: a DEM case (`run`), a population balance (`pbm`), a fit (`calibrate`: of a population
 // balance, or of a bonded grain's compression) or a chain (`couple`). The kind is read from the
-// tables the case has; each is read by the same code as its command, then unknown keys are
-// refused.
+// tables the case has (case_kind.hpp); each is read by the same code as its command, then unknown
+// keys are refused.
 #include <fmt/format.h>
 
+#include "case_kind.hpp"
 #include "case_loading.hpp"
 #include "command.hpp"
 #include "comminute/io/case/calibration_case.hpp"
@@ -74,14 +75,18 @@ std::function<int()> setup_check(CLI::App& sub) {
   auto path = std::make_shared<std::string>();
   sub.add_option("case", *path, "case file (TOML)")->required();
   return [path] {
-    const CaseFile cf = CaseFile::load(*path);
-    const CaseTable root = cf.root();
-    if (root.has("couple")) return check_couple(*path);  // a chain: its DEM and pbm cases too
-    if (root.has("simulation"))
-      return io::is_grain_calibration(root) ? check_grain_calibration(cf) : check_dem(*path);
-    // without [simulation], a size grid marks a population balance; anything else is read as a
-    // DEM case, whose reader names what is missing
-    return root.has("grid") ? check_pbm(cf) : check_dem(*path);
+    switch (case_kind(*path)) {
+      case CaseKind::chain:  // its DEM and pbm cases too
+        return check_couple(*path);
+      case CaseKind::grain_fit:
+        return check_grain_calibration(CaseFile::load(*path));
+      case CaseKind::population_balance:
+      case CaseKind::population_balance_fit:
+        return check_pbm(CaseFile::load(*path));
+      case CaseKind::dem:
+        break;
+    }
+    return check_dem(*path);
   };
 }
 

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "case_kind.hpp"
 #include "command.hpp"
 #include "comminute/analysis/collision_log.hpp"
 #include "comminute/core/error.hpp"
@@ -64,6 +65,7 @@ int run_dem_stage(LoadedCase& dem, const run::CoupleCase& c, const run::DemObser
 PreparedCouple prepare_couple_case(const std::filesystem::path& file) {
   // Everything is read and checked before the DEM runs: the couple case, the DEM case, and the
   // pbm case as far as it does not need the files the DEM stage is to write.
+  require_case_kind(file, {CaseKind::chain});
   const auto cf = CaseFile::load(file);
   run::CoupleCase c = run::read_couple_case(cf.root());
   cf.reject_unknown();

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "case_kind.hpp"
 #include "command.hpp"
 #include "comminute/core/case_table.hpp"
 #include "comminute/core/error.hpp"
@@ -42,6 +43,7 @@ void check_non_negative(pbm::Solution& s, const pbm::Problem& p) {
 }  // namespace
 
 int solve_pbm_case(const std::filesystem::path& file, bool no_plots) {
+  require_case_kind(file, {CaseKind::population_balance});
   const auto cf = CaseFile::load(file);
   const auto root = cf.root();
   const pbm::Problem p = io::read_pbm_problem(root);

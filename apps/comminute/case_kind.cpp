@@ -1,7 +1,6 @@
 #include "case_kind.hpp"
 
 #include <algorithm>
-#include <string>
 
 #include "comminute/core/case_table.hpp"
 
@@ -31,30 +30,29 @@ void require_case_kind(const std::filesystem::path& file,
   switch (kind) {
     case CaseKind::chain:
       root.fail("couple",
-                "this table makes the case a DEM-to-population-balance chain: run it "
-                "with `comminute couple`");
+                "this table makes the case a DEM-to-population-balance chain: "
+                "run it with `comminute couple`");
     case CaseKind::grain_fit:
       root.fail("calibration",
-                "with [calibration.compression] the case is a fit of bond "
-                "parameters to a grain's compression: run it with `comminute "
-                "calibrate` (without [calibration], `comminute run` runs the DEM "
-                "case)");
+                "with [calibration.compression] the case is a fit of bond parameters "
+                "to a grain's compression: run it with `comminute calibrate` "
+                "(without [calibration], `comminute run` runs the DEM case)");
     case CaseKind::population_balance:
       root.fail("grid",
-                "a [grid] and no [simulation] make the case a population balance: run it "
-                "with `comminute pbm`");
+                "a [grid] and no [simulation] make the case a population balance: "
+                "run it with `comminute pbm`");
     case CaseKind::population_balance_fit:
       root.fail("calibration",
-                "a population balance with [calibration] is a fit: run it with "
-                "`comminute calibrate` (without [calibration], `comminute pbm` "
-                "solves it)");
+                "a population balance with [calibration] is a fit: "
+                "run it with `comminute calibrate` "
+                "(without [calibration], `comminute pbm` solves it)");
     case CaseKind::dem:
       break;
   }
   root.fail("simulation",
-            "this table makes the case a DEM case: run it with `comminute run` (with "
-            "[calibration.compression] it is a grain compression fit, for `comminute "
-            "calibrate`)");
+            "this table makes the case a DEM case: run it with `comminute run` "
+            "(with [calibration.compression] it is a grain compression fit, "
+            "for `comminute calibrate`)");
 }
 
 }  // namespace comminute::app

@@ -40,28 +40,28 @@ refused run couple.toml couple couple
 refused pbm couple.toml couple couple
 refused calibrate couple.toml couple couple
 
+expect_refusal() {  # expect_refusal <description> <text that must appear> <comminute args...>
+  local what=$1 text=$2 out rc
+  shift 2
+  out=$("$bin" "$@" 2>&1)
+  rc=$?
+  if [ $rc -eq 2 ] && grep -qF -- "$text" <<<"$out"; then
+    echo "ok: $what"
+  else
+    echo "FAIL: $what (rc $rc): $out"
+    fail=1
+  fi
+}
 # a DEM case with a [calibration] table that is not a grain compression: still an unknown key
 { cat settle.toml; printf '\n[calibration]\nstarts = 3\n'; } > stray.toml
 line=$(grep -n '^\[calibration\]' stray.toml | cut -d: -f1)
-for args in "run stray.toml -o out" "check stray.toml"; do
-  out=$("$bin" $args 2>&1)
-  rc=$?
-  if [ $rc -eq 2 ] && grep -qF "stray.toml:$line: key 'calibration': unknown key" <<<"$out"; then
-    echo "ok: ${args%% *} refuses the stray [calibration] as unknown"
-  else
-    echo "FAIL: ${args%% *} on a stray [calibration] (rc $rc): $out"
-    fail=1
-  fi
-done
+expect_refusal "run refuses a stray [calibration] as unknown" \
+  "stray.toml:$line: key 'calibration': unknown key" run stray.toml -o out
+expect_refusal "check refuses a stray [calibration] as unknown" \
+  "stray.toml:$line: key 'calibration': unknown key" check stray.toml
 # a population balance without [calibration] given to calibrate: its reader names what is missing
-out=$("$bin" calibrate batch_grinding.toml 2>&1)
-rc=$?
-if [ $rc -eq 2 ] && grep -qF "missing required key 'calibration'" <<<"$out"; then
-  echo "ok: calibrate of a plain population balance asks for [calibration]"
-else
-  echo "FAIL: calibrate batch_grinding.toml (rc $rc): $out"
-  fail=1
-fi
+expect_refusal "calibrate of a plain population balance asks for [calibration]" \
+  "missing required key 'calibration'" calibrate batch_grinding.toml
 # the kinds each command runs still run or check
 for c in settle.toml batch_grinding.toml calibrate_carbon_black.toml grain_compression.toml; do
   "$bin" check "$c" > /dev/null 2>&1 || { echo "FAIL: check $c"; fail=1; }

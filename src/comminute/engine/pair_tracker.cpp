@@ -15,12 +15,15 @@ namespace comminute {
 
 namespace {
 // Room for n values in v, whose old values are not needed: a v too small is freed and re-made
-// 1/8 larger (the next in-place updates add fragments) with nothing copied.
+// 1/8 larger (the next in-place updates add fragments) with nothing copied; the pages of the
+// first n made resident before they are written (fresh pages: core/memory.hpp).
 template <class T>
 void make_room(std::vector<T>& v, std::size_t n) {
-  if (v.capacity() >= n) return;
-  std::vector<T>().swap(v);
-  v.reserve(n + n / 8);
+  if (v.capacity() < n) {
+    std::vector<T>().swap(v);
+    v.reserve(n + n / 8);
+  }
+  make_resident(v, n);
 }
 }  // namespace
 
@@ -150,8 +153,6 @@ void PairTracker::rebuild(ParticleStore& p, const Walls& walls, SimulationOption
   // fresh pages costs a page fault per 4 KiB, more than the copy (bench_breakage)
   make_room(x_at_build_, p.size());
   make_room(r_at_build_, p.size());
-  make_resident(x_at_build_, p.size());  // (fresh pages: core/memory.hpp)
-  make_resident(r_at_build_, p.size());
   x_at_build_.assign(p.x.begin(), p.x.end());
   r_at_build_.assign(p.radius.begin(), p.radius.end());
   reach_tracked_.clear();

@@ -13,7 +13,9 @@ namespace comminute {
 
 namespace {
 constexpr std::size_t kAhead = 16;  // pairs between a position's prefetch and its use
-struct Touching {                   // a touching pair of a run: its particles and lever arms (m)
+constexpr std::size_t kNoBlock = ~std::size_t{0};
+constexpr std::uint32_t kNoSlot = 0xFFFFFFFFu;
+struct Touching {  // a touching pair of a run: its particles and lever arms (m)
   std::uint32_t i, j;
   double ri, rj;
 };
@@ -68,6 +70,13 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
   const std::uint16_t* mat = p.material.data();
   const std::uint32_t *first = pairs.first.data(), *second = pairs.second.data();
   const std::uint32_t own0 = ranges_.begin()[t], own1 = ranges_.begin()[t + 1];
+  // a slot that only this thread's rows touch takes its loads here, in pair order; another one's
+  // loads queue, in pair order, for its owner thread to add after the loop in thread order:
+  // either way each slot receives them in the order of the whole list, whatever the split
+  const std::uint64_t* span = pairs.owner_span().data();
+  const auto alone = [ span, own0, own1 ](std::uint32_t slot) __attribute__((always_inline)) {
+    return NeighborList::span_within(span[slot], own0, own1);
+  };
   auto& queued = cross_[t];
   queued.clear();
   auto& separated = ended_[t];
@@ -78,7 +87,32 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
     sp->starts.clear();
     sp->contacts.clear();
   }
-  EnergyTally tl;  // local: threads' tallies side by side in memory would share a cache line
+  // the energy of the contacts of each block of owners (pair_split.hpp), summed here and stored
+  // when the next block begins: a block's rows are all this thread's
+  EnergyTally tl;
+  std::size_t block = kNoBlock;
+  EnergyTally* tally = tally_.data();
+  // the owner whose row is being summed (rows run over several runs of contacts): its row's
+  // force, torque, Love–Weber moment and load-bearing count, from zero, added to the slot (or
+  // queued) when its row ends
+  std::uint32_t held = kNoSlot;
+  Vec3 fi, ti;
+  SymTensor mi{};
+  std::uint32_t lbi = 0;
+  const auto end_row = [&]() __attribute__((always_inline)) {
+    if (held == kNoSlot) return;
+    if (alone(held)) {
+      F[held] += fi;
+      T[held] += ti;
+      if (armed) {
+        for (std::size_t a = 0; a < 6; ++a) cs->moment[held][a] += mi[a];
+        cs->load_bearing[held] += lbi;
+      }
+    } else {
+      queued.push_back({held, fi, ti});
+      if (armed) sp->cross.push_back({held, lbi, mi});
+    }
+  };
   const std::size_t k0 = rows[own0], k1 = rows[own1];
   // the touching pairs are gathered into runs (contact_run.hpp), evaluated in one call (the law
   // inlined in its loop), then their forces are added in pair order
@@ -91,11 +125,6 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
     const std::size_t n = run.size;  // (a local, as in the gather below)
     if (n == 0) return;
     run.evaluate(pipeline, slots);
-    // particle i's force and torque stay in registers over its consecutive contacts (the list
-    // is sorted by i; j != i, so no other write of the run touches them): the same sums in the
-    // same order as adding to F[i], T[i] contact by contact
-    std::uint32_t held = run.who[0].i;
-    Vec3 fi = F[held], ti = T[held];
     const ForceColumns& o = run.forces;
     const KinematicsColumns& k = run.kinematics;
     for (std::size_t c = 0; c < n; ++c) {
@@ -104,19 +133,25 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
       const Vec3 ft{o.fx[c], o.fy[c], o.fz[c]}, rolling_torque{o.tx[c], o.ty[c], o.tz[c]};
       // by reference: a copy of the record stalls on its two stores
       const auto& [i, j, ri, rj] = run.who[c];
-      if (i != held) {
-        F[held] = fi;
-        T[held] = ti;
+      if (i != held) {  // (the list is sorted by owner: a row's contacts come together)
+        end_row();
         held = i;
-        fi = F[i];
-        ti = T[i];
+        fi = ti = Vec3{};
+        mi = SymTensor{};
+        lbi = 0;
+      }
+      if (i / kSplitBlock != block) {
+        if (block != kNoBlock) tally[block] = tl;
+        tl = EnergyTally{};
+        block = i / kSplitBlock;
       }
       tl.add(o.damping_dissipation[c], o.friction_dissipation[c], o.stored_energy[c]);
       const Vec3 fc = fn * nrm + ft;
       fi += fc;
       ti += rolling_torque - ri * cross(nrm, ft);
       const Vec3 tj = -(rolling_torque + rj * cross(nrm, ft));
-      if (j >= own0 && j < own1) {
+      const bool j_alone = alone(j);
+      if (j_alone) {
         F[j] -= fc;
         T[j] += tj;
       } else {
@@ -124,9 +159,9 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
       }
       if (armed) {  // Love–Weber: l_i = -ri n, l_j = +rj n, forces ±fc
         const std::uint32_t lb = fn > threshold ? 1 : 0;
-        add_sym_outer(cs->moment[i], fc, nrm, -ri);
-        cs->load_bearing[i] += lb;
-        if (j >= own0 && j < own1) {
+        add_sym_outer(mi, fc, nrm, -ri);
+        lbi += lb;
+        if (j_alone) {
           add_sym_outer(cs->moment[j], fc, nrm, -rj);
           cs->load_bearing[j] += lb;
         } else {
@@ -138,8 +173,6 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
           sp->contacts.push_back({i, static_cast<std::int32_t>(j), X[i], X[j], fc, fn});
       }
     }
-    F[held] = fi;
-    T[held] = ti;
     run.clear();
   };
   // the pairs visited, by position m: the pruned list's (pair_at(m) = its m-th pair), or all of
@@ -228,7 +261,8 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
     visit(
         [](std::size_t m) __attribute__((always_inline)) { return m; }, k0, k1);
   }
-  tally_[t] = tl;
+  end_row();
+  if (block != kNoBlock) tally[block] = tl;
 }
 
 void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const NeighborList& pairs,
@@ -238,14 +272,24 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
   const std::size_t n = p.size();
   const std::size_t npairs = pairs.size();
   const int nt = npairs >= 2 * kParallelMin ? max_threads() : 1;
-  // the threads split the pairs by cost (engine/pair_split.hpp) at the start of their region: the
-  // cost of each block of pairs is summed by the threads together, then one places the split
+  // the threads split the owners' rows by cost, in blocks of owners (engine/pair_split.hpp), at
+  // the start of their region: the cost of each block is summed by the threads together, then
+  // one places the split by the threads' shares (their measured speeds, learn_speeds)
+  const auto unt = static_cast<std::size_t>(nt);
   auto& split = split_;
   auto& owner_begin = ranges_.begin();
-  owner_begin.assign(static_cast<std::size_t>(nt) + 1, 0);
-  owner_begin[static_cast<std::size_t>(nt)] = static_cast<std::uint32_t>(n);
-  const std::size_t blocks = pair_split_blocks(npairs);
+  owner_begin.assign(unt + 1, 0);
+  owner_begin[unt] = static_cast<std::uint32_t>(n);
+  const std::size_t blocks = split_blocks(n);
   block_cost_.resize(blocks);
+  split.assign(unt + 1, blocks);
+  split[0] = 0;
+  if (share_.size() != unt) {  // (a new thread count: equal shares until measured)
+    share_.assign(unt, 1.0 / static_cast<double>(nt));
+    speed_.assign(unt, 0.0);
+  }
+  seconds_.assign(unt, 0.0);
+  const std::uint32_t* rows = pairs.rows().data();
   cross_.resize(static_cast<std::size_t>(nt));
   ended_.resize(static_cast<std::size_t>(nt));
   const CollisionRecord* record = pipeline.collisions();
@@ -255,7 +299,7 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
   const double threshold = cs ? cs->threshold() : 0.0;
   if (cs) stress_.resize(static_cast<std::size_t>(nt));
   auto& tally = tally_;
-  tally.assign(static_cast<std::size_t>(nt), EnergyTally{});
+  tally.assign(blocks, EnergyTally{});
   const Slots& slots = state.slots();
   const bool rolling = pipeline.has_rolling();
   std::uint8_t* active = state.active.data();
@@ -280,20 +324,21 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
 #pragma omp parallel num_threads(nt)
   {
     const int t = thread_id();
+    const auto ut = static_cast<std::size_t>(t);
     if (nt > 1) {
-      const auto ut = static_cast<std::size_t>(t), unt = static_cast<std::size_t>(nt);
-      pair_block_costs(active, npairs, blocks * ut / unt, blocks * (ut + 1) / unt,
-                       block_cost_.data());
+      split_block_costs(rows, active, n, blocks * ut / unt, blocks * (ut + 1) / unt,
+                        block_cost_.data());
 #pragma omp barrier
 #pragma omp single
       {
-        split_from_block_costs(active, npairs, nt, block_cost_.data(), split);
-        for (int u = 1; u < nt; ++u)
-          owner_begin[u] =
-              split[u] < npairs ? pairs.first[split[u]] : static_cast<std::uint32_t>(n);
+        split_blocks_by_share(block_cost_.data(), blocks, share_, split);
+        for (std::size_t u = 1; u < unt; ++u)
+          owner_begin[u] = static_cast<std::uint32_t>(std::min(n, split[u] * kSplitBlock));
       }  // (the threads wait here for the split)
     }
+    const double start = omp_get_wtime();
     thread_pairs(shared, t);
+    seconds_[ut] = omp_get_wtime() - start;
     if (nt > 1) {
       // each thread adds the shares queued for its own particles, in thread order (the same sums
       // as adding every list in turn), so that their forces stay in its core's cache
@@ -307,6 +352,7 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
           }
     }
   }
+  if (nt > 1) learn_speeds();
   for (const auto& tl : tally) tl.book(ledger, elastic);
   for (const auto& list : ended_) ended.insert(ended.end(), list.begin(), list.end());
   if (cs)
@@ -318,6 +364,23 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
       cs->starts.insert(cs->starts.end(), part.starts.begin(), part.starts.end());
       cs->contacts.insert(cs->contacts.end(), part.contacts.begin(), part.contacts.end());
     }
+}
+
+void PairForceLoop::learn_speeds() {
+  const std::size_t nt = share_.size();
+  double sum = 0;
+  for (std::size_t t = 0; t < nt; ++t) {
+    std::uint64_t cost = 0;
+    for (std::size_t b = split_[t]; b < split_[t + 1]; ++b) cost += block_cost_[b];
+    if (cost > 0 && seconds_[t] > 0) {
+      const double speed = static_cast<double>(cost) / seconds_[t];
+      speed_[t] = speed_[t] > 0 ? (1 - kSpeedWeight) * speed_[t] + kSpeedWeight * speed : speed;
+    }
+    sum += speed_[t];
+  }
+  for (std::size_t t = 0; t < nt; ++t)
+    if (!(speed_[t] > 0)) return;  // a thread not measured yet: the shares stay
+  for (std::size_t t = 0; t < nt; ++t) share_[t] = speed_[t] / sum;
 }
 
 }  // namespace comminute

@@ -1,9 +1,14 @@
 #pragma once
 // The particle–particle force loop. Each thread owns a contiguous range of particle slots and the
-// pairs they own (pairs are grouped by owner), split so that the threads get equal work. A thread
-// writes the forces of its own particles directly; a pair whose other particle belongs to another
-// thread queues that particle's share, which the owner adds after the loop in thread order. No
-// atomics, no per-thread copies of the force arrays, and the same thread count gives the same sums.
+// pairs they own (pairs are grouped by owner), split so that the threads finish together: by the
+// cost of the pairs and by each thread's measured speed (a processor shared with other work runs
+// slower for minutes at a time). The split decides the speed, never the result: a slot that only
+// one thread's pairs touch takes its loads directly, in pair order; the loads of a slot that
+// pairs of several threads touch queue, in pair order, and its owner thread adds them after the
+// loop in thread order; an owner's own row is summed from zero and added when the row ends. So
+// every slot receives its loads in the order of the whole list, and the energy is summed per
+// block of owners in block order: the results are the same bit for bit for any split and any
+// thread count. No atomics, no per-thread copies of the force arrays.
 #include <cstdint>
 #include <vector>
 
@@ -50,6 +55,10 @@ class PairForceLoop {
   };
   std::vector<std::vector<CrossForce>> cross_;    // per thread, reused
   std::vector<std::vector<EndedContact>> ended_;  // per thread, reused
+  // The threads' shares of the next split from their speeds (cost per second in the pair loop,
+  // an average that follows the last steps by kSpeedWeight).
+  void learn_speeds();
+  static constexpr double kSpeedWeight = 0.2;
   struct CrossMoment {  // a pair's Love–Weber share for a particle owned by another thread
     std::uint32_t particle;
     std::uint32_t load_bearing;
@@ -61,11 +70,13 @@ class PairForceLoop {
     std::vector<ContactRecord> contacts;
   };
   std::vector<StressPart> stress_;
-  // reused from step to step: the threads' pair ranges, their first owned particles, their energy
+  // reused from step to step: the threads' ranges of owner blocks, their first owned particles,
+  // the blocks' costs and energy, the threads' seconds in the loop, speeds and shares
   std::vector<std::size_t> split_;
   ParticleRanges ranges_;                  // the threads' first owned particles, and the end
-  std::vector<std::uint64_t> block_cost_;  // the cost of each block of pairs (pair_split.hpp)
-  std::vector<EnergyTally> tally_;
+  std::vector<std::uint64_t> block_cost_;  // the cost of each block of owners (pair_split.hpp)
+  std::vector<EnergyTally> tally_;         // per block of owners
+  std::vector<double> seconds_, speed_, share_;
 };
 
 }  // namespace comminute

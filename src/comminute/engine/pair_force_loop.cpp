@@ -73,9 +73,12 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
   // a slot that only this thread's rows touch takes its loads here, in pair order; another one's
   // loads queue, in pair order, for its owner thread to add after the loop in thread order:
   // either way each slot receives them in the order of the whole list, whatever the split
+  // (a thread with every slot, as on one thread, has no need to look)
   const std::uint64_t* span = pairs.owner_span().data();
-  const auto alone = [ span, own0, own1 ](std::uint32_t slot) __attribute__((always_inline)) {
-    return NeighborList::span_within(span[slot], own0, own1);
+  const bool whole = own0 == 0 && own1 >= p.size();
+  const auto alone =
+      [ span, own0, own1, whole ](std::uint32_t slot) __attribute__((always_inline)) {
+    return whole || NeighborList::span_within(span[slot], own0, own1);
   };
   auto& queued = cross_[t];
   queued.clear();
@@ -95,22 +98,26 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
   // the owner whose row is being summed (rows run over several runs of contacts): its row's
   // force, torque, Love–Weber moment and load-bearing count, from zero, added to the slot (or
   // queued) when its row ends
-  std::uint32_t held = kNoSlot;
-  Vec3 fi, ti;
-  SymTensor mi{};
-  std::uint32_t lbi = 0;
-  const auto end_row = [&]() __attribute__((always_inline)) {
-    if (held == kNoSlot) return;
-    if (alone(held)) {
-      F[held] += fi;
-      T[held] += ti;
+  // (the moment apart: its address is taken, which would keep the force and torque in memory)
+  struct Row {
+    std::uint32_t held = kNoSlot;
+    Vec3 f, t;
+  };
+  Row row;
+  SymTensor row_moment{};
+  std::uint32_t row_bearing = 0;
+  const auto end_row = [&](const Row& r) __attribute__((always_inline)) {
+    if (r.held == kNoSlot) return;
+    if (alone(r.held)) {
+      F[r.held] += r.f;
+      T[r.held] += r.t;
       if (armed) {
-        for (std::size_t a = 0; a < 6; ++a) cs->moment[held][a] += mi[a];
-        cs->load_bearing[held] += lbi;
+        for (std::size_t a = 0; a < 6; ++a) cs->moment[r.held][a] += row_moment[a];
+        cs->load_bearing[r.held] += row_bearing;
       }
     } else {
-      queued.push_back({held, fi, ti});
-      if (armed) sp->cross.push_back({held, lbi, mi});
+      queued.push_back({r.held, r.f, r.t});
+      if (armed) sp->cross.push_back({r.held, row_bearing, row_moment});
     }
   };
   const std::size_t k0 = rows[own0], k1 = rows[own1];
@@ -127,28 +134,34 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
     run.evaluate(pipeline, slots);
     const ForceColumns& o = run.forces;
     const KinematicsColumns& k = run.kinematics;
+    // the row and the block's energy in locals over the run (registers), as the sums go on
+    Row r = row;
+    EnergyTally e = tl;
+    std::size_t b = block;
     for (std::size_t c = 0; c < n; ++c) {
       const Vec3 nrm{k.nx[c], k.ny[c], k.nz[c]};
       const double fn = o.normal_force[c];
       const Vec3 ft{o.fx[c], o.fy[c], o.fz[c]}, rolling_torque{o.tx[c], o.ty[c], o.tz[c]};
       // by reference: a copy of the record stalls on its two stores
       const auto& [i, j, ri, rj] = run.who[c];
-      if (i != held) {  // (the list is sorted by owner: a row's contacts come together)
-        end_row();
-        held = i;
-        fi = ti = Vec3{};
-        mi = SymTensor{};
-        lbi = 0;
+      if (i != r.held) {  // (the list is sorted by owner: a row's contacts come together)
+        end_row(r);
+        r.held = i;
+        r.f = r.t = Vec3{};
+        if (armed) {
+          row_moment = SymTensor{};
+          row_bearing = 0;
+        }
+        if (i / kSplitBlock != b) {  // (a block begins with a row)
+          if (b != kNoBlock) tally[b] = e;
+          e = EnergyTally{};
+          b = i / kSplitBlock;
+        }
       }
-      if (i / kSplitBlock != block) {
-        if (block != kNoBlock) tally[block] = tl;
-        tl = EnergyTally{};
-        block = i / kSplitBlock;
-      }
-      tl.add(o.damping_dissipation[c], o.friction_dissipation[c], o.stored_energy[c]);
+      e.add(o.damping_dissipation[c], o.friction_dissipation[c], o.stored_energy[c]);
       const Vec3 fc = fn * nrm + ft;
-      fi += fc;
-      ti += rolling_torque - ri * cross(nrm, ft);
+      r.f += fc;
+      r.t += rolling_torque - ri * cross(nrm, ft);
       const Vec3 tj = -(rolling_torque + rj * cross(nrm, ft));
       const bool j_alone = alone(j);
       if (j_alone) {
@@ -159,8 +172,8 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
       }
       if (armed) {  // Love–Weber: l_i = -ri n, l_j = +rj n, forces ±fc
         const std::uint32_t lb = fn > threshold ? 1 : 0;
-        add_sym_outer(mi, fc, nrm, -ri);
-        lbi += lb;
+        add_sym_outer(row_moment, fc, nrm, -ri);
+        row_bearing += lb;
         if (j_alone) {
           add_sym_outer(cs->moment[j], fc, nrm, -rj);
           cs->load_bearing[j] += lb;
@@ -173,6 +186,9 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
           sp->contacts.push_back({i, static_cast<std::int32_t>(j), X[i], X[j], fc, fn});
       }
     }
+    row = r;
+    tl = e;
+    block = b;
     run.clear();
   };
   // the pairs visited, by position m: the pruned list's (pair_at(m) = its m-th pair), or all of
@@ -199,6 +215,7 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
         __builtin_prefetch(&mat[j]);
         __builtin_prefetch(&F[j], 1);
         __builtin_prefetch(&T[j], 1);
+        if (!whole) __builtin_prefetch(&span[j]);
         for (std::size_t c = 0; c < ncolumns; ++c)
           __builtin_prefetch(columns[c] + k * widths[c], 1);
         const Vec3 d = X[i] - X[j];
@@ -261,7 +278,7 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
     visit(
         [](std::size_t m) __attribute__((always_inline)) { return m; }, k0, k1);
   }
-  end_row();
+  end_row(row);
   if (block != kNoBlock) tally[block] = tl;
 }
 

@@ -3,8 +3,8 @@
 // pair forces and the wall contacts. The ranges are contiguous and the same in every loop, so that
 // a particle's values stay in the cache of the core that works on them from one loop to the next
 // (handed between cores, a cache line costs hundreds of nanoseconds on some machines). The pair
-// force loop places them each step by the cost of the particles' pairs (pair_split.hpp); the loops
-// that come before it in a step take the last step's ranges.
+// force loop places them each step by the cost of the particles' pairs and the threads' measured
+// speeds (pair_split.hpp); the loops that come before it in a step take the last step's ranges.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>

@@ -70,15 +70,17 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
   const std::uint16_t* mat = p.material.data();
   const std::uint32_t *first = pairs.first.data(), *second = pairs.second.data();
   const std::uint32_t own0 = ranges_.begin()[t], own1 = ranges_.begin()[t + 1];
-  // a slot that only this thread's rows touch takes its loads here, in pair order; another one's
-  // loads queue, in pair order, for its owner thread to add after the loop in thread order:
-  // either way each slot receives them in the order of the whole list, whatever the split
-  // (a thread with every slot, as on one thread, has no need to look)
-  const std::uint64_t* span = pairs.owner_span().data();
+  // the thread that holds a slot's first pair (NeighborList::first_owner) adds its loads to the
+  // slot here, in pair order; a later thread queues them, in pair order, for the slot's owner
+  // thread to add after the loop in thread order: either way each slot receives them in the
+  // order of the whole list, whatever the split (a thread with every slot, as one thread, has no
+  // need to look)
+  const std::uint32_t* lowest = pairs.first_owner().data();
   const bool whole = own0 == 0 && own1 >= p.size();
+  const std::uint32_t width = own1 - own0;  // (own0 <= s < own1 as one unsigned comparison)
   const auto alone =
-      [ span, own0, own1, whole ](std::uint32_t slot) __attribute__((always_inline)) {
-    return whole || NeighborList::span_within(span[slot], own0, own1);
+      [ lowest, own0, width, whole ](std::uint32_t slot) __attribute__((always_inline)) {
+    return whole || lowest[slot] - own0 < width;
   };
   auto& queued = cross_[t];
   queued.clear();
@@ -215,7 +217,6 @@ void PairForceLoop::thread_pairs(const Shared& s, int t) {
         __builtin_prefetch(&mat[j]);
         __builtin_prefetch(&F[j], 1);
         __builtin_prefetch(&T[j], 1);
-        if (!whole) __builtin_prefetch(&span[j]);
         for (std::size_t c = 0; c < ncolumns; ++c)
           __builtin_prefetch(columns[c] + k * widths[c], 1);
         const Vec3 d = X[i] - X[j];
@@ -293,6 +294,12 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
   // the start of their region: the cost of each block is summed by the threads together, then
   // one places the split by the threads' shares (their measured speeds, learn_speeds)
   const auto unt = static_cast<std::size_t>(nt);
+  if (share_.size() != unt) {  // (a new thread count: equal shares until measured)
+    share_.assign(unt, 1.0 / static_cast<double>(nt));
+    speed_.assign(unt, 0.0);
+  } else if (nt > 1) {
+    learn_speeds();  // (from the last split, before it is replaced)
+  }
   auto& split = split_;
   auto& owner_begin = ranges_.begin();
   owner_begin.assign(unt + 1, 0);
@@ -301,11 +308,8 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
   block_cost_.resize(blocks);
   split.assign(unt + 1, blocks);
   split[0] = 0;
-  if (share_.size() != unt) {  // (a new thread count: equal shares until measured)
-    share_.assign(unt, 1.0 / static_cast<double>(nt));
-    speed_.assign(unt, 0.0);
-  }
-  seconds_.assign(unt, 0.0);
+  std::vector<double>& seconds = ranges_.seconds();
+  seconds.assign(unt, 0.0);
   const std::uint32_t* rows = pairs.rows().data();
   cross_.resize(static_cast<std::size_t>(nt));
   ended_.resize(static_cast<std::size_t>(nt));
@@ -355,7 +359,7 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
     }
     const double start = omp_get_wtime();
     thread_pairs(shared, t);
-    seconds_[ut] = omp_get_wtime() - start;
+    seconds[ut] += omp_get_wtime() - start;
     if (nt > 1) {
       // each thread adds the shares queued for its own particles, in thread order (the same sums
       // as adding every list in turn), so that their forces stay in its core's cache
@@ -369,7 +373,6 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
           }
     }
   }
-  if (nt > 1) learn_speeds();
   for (const auto& tl : tally) tl.book(ledger, elastic);
   for (const auto& list : ended_) ended.insert(ended.end(), list.begin(), list.end());
   if (cs)
@@ -385,12 +388,14 @@ void PairForceLoop::run(ParticleStore& p, const MaterialTable& materials, const 
 
 void PairForceLoop::learn_speeds() {
   const std::size_t nt = share_.size();
+  const std::vector<double>& seconds = ranges_.seconds();
+  if (seconds.size() != nt || split_.size() != nt + 1) return;  // not placed for these threads
   double sum = 0;
   for (std::size_t t = 0; t < nt; ++t) {
     std::uint64_t cost = 0;
     for (std::size_t b = split_[t]; b < split_[t + 1]; ++b) cost += block_cost_[b];
-    if (cost > 0 && seconds_[t] > 0) {
-      const double speed = static_cast<double>(cost) / seconds_[t];
+    if (cost > 0 && seconds[t] > 0) {
+      const double speed = static_cast<double>(cost) / seconds[t];
       speed_[t] = speed_[t] > 0 ? (1 - kSpeedWeight) * speed_[t] + kSpeedWeight * speed : speed;
     }
     sum += speed_[t];

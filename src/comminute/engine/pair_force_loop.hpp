@@ -2,13 +2,13 @@
 // The particle–particle force loop. Each thread owns a contiguous range of particle slots and the
 // pairs they own (pairs are grouped by owner), split so that the threads finish together: by the
 // cost of the pairs and by each thread's measured speed (a processor shared with other work runs
-// slower for minutes at a time). The split decides the speed, never the result: a slot that only
-// one thread's pairs touch takes its loads directly, in pair order; the loads of a slot that
-// pairs of several threads touch queue, in pair order, and its owner thread adds them after the
-// loop in thread order; an owner's own row is summed from zero and added when the row ends. So
-// every slot receives its loads in the order of the whole list, and the energy is summed per
-// block of owners in block order: the results are the same bit for bit for any split and any
-// thread count. No atomics, no per-thread copies of the force arrays.
+// slower for minutes at a time). The split decides the speed, never the result: the thread that
+// holds a slot's first pair adds the slot's loads directly, in pair order; a later thread's loads
+// for it queue, in pair order, and the slot's owner thread adds them after the loop in thread
+// order; an owner's own row is summed from zero and added when the row ends. So every slot
+// receives its loads in the order of the whole list, and the energy is summed per block of owners
+// in block order: the results are the same bit for bit for any split and any thread count. No
+// atomics, no per-thread copies of the force arrays.
 #include <cstdint>
 #include <vector>
 
@@ -55,10 +55,12 @@ class PairForceLoop {
   };
   std::vector<std::vector<CrossForce>> cross_;    // per thread, reused
   std::vector<std::vector<EndedContact>> ended_;  // per thread, reused
-  // The threads' shares of the next split from their speeds (cost per second in the pair loop,
-  // an average that follows the last steps by kSpeedWeight).
+  // Takes the seconds the threads spent on the last ranges (this loop's, and every loop's that
+  // followed the ranges: ParticleRanges::seconds) into their speeds and the shares of the next
+  // split: a thread's speed is the cost of its pairs per second of all that, so the shares settle
+  // where the threads take equal time.
   void learn_speeds();
-  static constexpr double kSpeedWeight = 0.2;
+  static constexpr double kSpeedWeight = 0.2;  // of the last step in the threads' speeds
   struct CrossMoment {  // a pair's Love–Weber share for a particle owned by another thread
     std::uint32_t particle;
     std::uint32_t load_bearing;
@@ -76,7 +78,7 @@ class PairForceLoop {
   ParticleRanges ranges_;                  // the threads' first owned particles, and the end
   std::vector<std::uint64_t> block_cost_;  // the cost of each block of owners (pair_split.hpp)
   std::vector<EnergyTally> tally_;         // per block of owners
-  std::vector<double> seconds_, speed_, share_;
+  std::vector<double> speed_, share_;
 };
 
 }  // namespace comminute

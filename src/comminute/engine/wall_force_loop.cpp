@@ -76,6 +76,7 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
   }
 #pragma omp parallel num_threads(nt)
   for (int t = thread_id(); t < nt; t += omp_get_num_threads()) {
+    const double start = omp_get_wtime();
     LookUp& look = scratch_[static_cast<std::size_t>(t)];
     const auto ut = static_cast<std::size_t>(t);
     for (std::size_t chunk = first_chunk[ut]; chunk < first_chunk[ut + 1]; ++chunk) {
@@ -207,6 +208,7 @@ void WallForceLoop::run(ParticleStore& p, const MaterialTable& materials,
       }
       evaluate_run();
     }
+    if (ranges.threads() == nt) ranges.add_seconds(t, omp_get_wtime() - start);
   }
   touching.clear();
   for (const auto& mine : std::span(part.data(), nchunk)) {

@@ -86,25 +86,22 @@ class NeighborList {
   const std::vector<std::uint8_t>& large() const { return large_; }
   // CSR offsets: the pairs owned by slot i are [rows()[i], rows()[i + 1]).
   const std::vector<std::uint32_t>& rows() const { return row_; }
-  // Per slot, the lowest and the highest owner (`first`) of the pairs that hold it, packed as
-  // lowest | highest << 32 (a slot in no pair: 0xFFFFFFFF | 0 << 32). A loop over the rows of
-  // owners [a, b) is then the only one to touch slot s when a <= lowest and highest < b: the
-  // pair force loop hands a slot's loads to its owner thread only when other rows touch it too.
-  const std::vector<std::uint64_t>& owner_span() const { return span_; }
-  static constexpr std::uint64_t kNoOwner = 0xFFFFFFFFu;
-  static bool span_within(std::uint64_t span, std::uint32_t a, std::uint32_t b) {
-    return (span & 0xFFFFFFFFu) >= a && (span >> 32) < b;
-  }
+  // Per slot, the lowest owner (`first`) among the pairs that hold it: its first pair in the
+  // list (kNoOwner for a slot in no pair). A loop over the rows in list order meets a slot's
+  // pairs from this row on: the pair force loop lets the thread with this row add to the slot
+  // directly and the others queue their loads behind it.
+  const std::vector<std::uint32_t>& first_owner() const { return first_owner_; }
+  static constexpr std::uint32_t kNoOwner = 0xFFFFFFFFu;
 
  private:
-  std::vector<std::uint64_t> ids_;        // p.id at build
-  std::vector<std::uint8_t> large_;       // 1 for particles in the large-particle grid
-  std::vector<std::uint32_t> row_;        // CSR offsets of rows by owner slot (size n+1)
-  std::vector<std::uint64_t> span_;       // owner_span(), by slot (size n)
-  ReachIndex index_;                      // reach spheres at build, for in-place updates
-  double skin_ = 0;                       // m, of the last build
-  Carry carry_;                           // of the last build
-  std::vector<std::uint32_t> kept_from_;  // of the last in-place update
+  std::vector<std::uint64_t> ids_;          // p.id at build
+  std::vector<std::uint8_t> large_;         // 1 for particles in the large-particle grid
+  std::vector<std::uint32_t> row_;          // CSR offsets of rows by owner slot (size n+1)
+  std::vector<std::uint32_t> first_owner_;  // first_owner(), by slot (size n)
+  ReachIndex index_;                        // reach spheres at build, for in-place updates
+  double skin_ = 0;                         // m, of the last build
+  Carry carry_;                             // of the last build
+  std::vector<std::uint32_t> kept_from_;    // of the last in-place update
   // ids_ = p.id after an in-place update.
   void follow_ids(const ParticleStore& p);
   // Rows of the appended particles n_kept .. n - 1 (update_in_place, renew_in_place).
@@ -132,9 +129,9 @@ class NeighborList {
   std::vector<std::pair<std::uint64_t, std::uint32_t>> slot_of_id_;
   std::vector<std::uint32_t> slot_by_id_;  // slot by id - lowest id (dense ids, no ghosts)
   void make_rows(std::size_t n);
-  // owner_span() of slots [0, n): the pairs from `from` on taken into the spans the slots hold
-  // already (0: all pairs, the spans made afresh).
-  void cover_spans(std::size_t n, std::size_t from);
+  // first_owner() of slots [0, n): the pairs from `from` on taken into what the slots hold
+  // already (0: all pairs, made afresh).
+  void find_first_owners(std::size_t n, std::size_t from);
 };
 
 }  // namespace comminute

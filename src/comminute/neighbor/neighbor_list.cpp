@@ -33,21 +33,7 @@ void NeighborList::make_rows(std::size_t n) {
     for (std::size_t i = tail + left * t / ut; i < tail + left * (t + 1) / ut; ++i)
       row_[i] = static_cast<std::uint32_t>(m);
   }
-  find_first_owners(n, 0);
-}
-
-void NeighborList::find_first_owners(std::size_t n, std::size_t from) {
-  if (from == 0) first_owner_.assign(n, kNoOwner);
-  first_owner_.resize(n, kNoOwner);
-  // (serial: the second slots are scattered; one pass over the pairs at a build)
-  std::uint32_t* lowest = first_owner_.data();
-  std::uint32_t last = kNoOwner;
-  for (std::size_t k = from; k < first.size(); ++k) {
-    const std::uint32_t i = first[k], j = second[k];
-    if (i != last) lowest[i] = std::min(lowest[i], i);  // (its row's pairs are consecutive)
-    last = i;
-    lowest[j] = std::min(lowest[j], i);
-  }
+  first_owners_.find(first, second, n, 0);
 }
 
 void NeighborList::build(const ParticleStore& p, double skin, const std::vector<std::uint8_t>& keep,
@@ -419,7 +405,7 @@ void NeighborList::renew_in_place(const ParticleStore& p, const std::vector<Vec3
                                   const std::vector<double>& r_build) {
   const std::size_t n_old = ids_.size(), n = p.size(), m_old = first.size();
   append_rows(n_old, n, x_build, r_build);
-  find_first_owners(n, m_old);  // (the kept pairs stay where they were)
+  first_owners_.find(first, second, n, m_old);  // (the kept pairs stay where they were)
   large_.resize(n, 0);
   follow_ids(p);  // (the renewed slots' ids and the appended ones' are new)
   // the rows of the kept owners are unchanged; the appended owners' rows follow

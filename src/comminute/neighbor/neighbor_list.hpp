@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "comminute/neighbor/first_owners.hpp"
 #include "comminute/neighbor/reach_index.hpp"
 #include "comminute/particles/particle_store.hpp"
 
@@ -86,22 +87,18 @@ class NeighborList {
   const std::vector<std::uint8_t>& large() const { return large_; }
   // CSR offsets: the pairs owned by slot i are [rows()[i], rows()[i + 1]).
   const std::vector<std::uint32_t>& rows() const { return row_; }
-  // Per slot, the lowest owner (`first`) among the pairs that hold it: its first pair in the
-  // list (kNoOwner for a slot in no pair). A loop over the rows in list order meets a slot's
-  // pairs from this row on: the pair force loop lets the thread with this row add to the slot
-  // directly and the others queue their loads behind it.
-  const std::vector<std::uint32_t>& first_owner() const { return first_owner_; }
-  static constexpr std::uint32_t kNoOwner = 0xFFFFFFFFu;
+  // Per slot, the lowest owner of its pairs (first_owners.hpp).
+  const std::vector<std::uint32_t>& first_owner() const { return first_owners_.of_slots(); }
 
  private:
-  std::vector<std::uint64_t> ids_;          // p.id at build
-  std::vector<std::uint8_t> large_;         // 1 for particles in the large-particle grid
-  std::vector<std::uint32_t> row_;          // CSR offsets of rows by owner slot (size n+1)
-  std::vector<std::uint32_t> first_owner_;  // first_owner(), by slot (size n)
-  ReachIndex index_;                        // reach spheres at build, for in-place updates
-  double skin_ = 0;                         // m, of the last build
-  Carry carry_;                             // of the last build
-  std::vector<std::uint32_t> kept_from_;    // of the last in-place update
+  std::vector<std::uint64_t> ids_;        // p.id at build
+  std::vector<std::uint8_t> large_;       // 1 for particles in the large-particle grid
+  std::vector<std::uint32_t> row_;        // CSR offsets of rows by owner slot (size n+1)
+  FirstOwners first_owners_;              // first_owner(), by slot (size n)
+  ReachIndex index_;                      // reach spheres at build, for in-place updates
+  double skin_ = 0;                       // m, of the last build
+  Carry carry_;                           // of the last build
+  std::vector<std::uint32_t> kept_from_;  // of the last in-place update
   // ids_ = p.id after an in-place update.
   void follow_ids(const ParticleStore& p);
   // Rows of the appended particles n_kept .. n - 1 (update_in_place, renew_in_place).
@@ -129,9 +126,6 @@ class NeighborList {
   std::vector<std::pair<std::uint64_t, std::uint32_t>> slot_of_id_;
   std::vector<std::uint32_t> slot_by_id_;  // slot by id - lowest id (dense ids, no ghosts)
   void make_rows(std::size_t n);
-  // first_owner() of slots [0, n): the pairs from `from` on taken into what the slots hold
-  // already (0: all pairs, made afresh).
-  void find_first_owners(std::size_t n, std::size_t from);
 };
 
 }  // namespace comminute

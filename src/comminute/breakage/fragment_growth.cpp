@@ -174,21 +174,26 @@ void FragmentGrowth::grow(Simulation& sim, std::size_t f_target, BreakageLedger&
     p.radius[s] = p.radius[p.owner_of(s)];
     if (p.radius[s] != r_before[s]) state[s] |= grew;
   }
-  const int nh = hits.size() >= kScatterMin ? max_threads() : 1;
+  // the growth energy of the pairs close enough to touch after growth
+  std::vector<std::uint32_t>& near = near_hits_;
+  parallel_select(
+      hits.size(),
+      [&](std::size_t m) { return hit_d2[m] != std::numeric_limits<double>::infinity(); }, near,
+      select_parts_);
+  const int nh = near.size() >= kScatterMin ? max_threads() : 1;
   std::vector<double> pair_energy(static_cast<std::size_t>(nh), 0.0);  // J, per thread
 #pragma omp parallel num_threads(nh)
   {
     const auto t = static_cast<std::size_t>(thread_id());
-    double sum = 0;  // in pair order over thread t's range of the hits
-    const std::size_t m1 = hits.size() * (t + 1) / static_cast<std::size_t>(nh);
-    for (std::size_t m = hits.size() * t / static_cast<std::size_t>(nh); m < m1; ++m) {
-      // +inf: too far apart to touch after growth (see growth_max)
-      const std::uint32_t ja = nl.second[hits[std::min(m + kAhead, m1 - 1)]];
+    double sum = 0;  // in pair order over thread t's range of the near hits
+    const std::size_t q0 = near.size() * t / static_cast<std::size_t>(nh),
+                      q1 = near.size() * (t + 1) / static_cast<std::size_t>(nh);
+    for (std::size_t q = q0; q < q1; ++q) {
+      const std::uint32_t ja = nl.second[hits[near[std::min(q + kAhead, q1 - 1)]]];
       __builtin_prefetch(&p.radius[ja]);
       __builtin_prefetch(&r_before[ja]);
-      const double d2 = hit_d2[m];
-      if (d2 == std::numeric_limits<double>::infinity()) continue;
-      const std::uint32_t k = hits[m];
+      const double d2 = hit_d2[near[q]];
+      const std::uint32_t k = hits[near[q]];
       const std::uint32_t i = nl.first[k], j = nl.second[k];
       if (((state[i] | state[j]) & grew) == 0) continue;  // nothing grew
       // apart by a clear margin (most pairs): no overlap after, no root taken; the margin

@@ -149,10 +149,15 @@ void Replacement::end_of_step(Simulation& sim, const Context& ctx) {
     }
     p.extend(slot - p.size());
     const std::uint64_t first_id = p.take_ids(ids);
-    parallel_for_each(outcomes.size(), [&](std::size_t q) {
-      outcomes[q].first_id += first_id;
-      write(sim, ctx, outcomes[q], in_slot);
-    });
+    // (each thread a contiguous run of parents: the fragments of neighbouring parents share cache
+    // lines of the store, which threads taking parents in turn would hand back and forth)
+    const auto n_outcomes = static_cast<std::ptrdiff_t>(outcomes.size());
+#pragma omp parallel for schedule(static) if (n_outcomes >= 64)
+    for (std::ptrdiff_t q = 0; q < n_outcomes; ++q) {
+      Outcome& o = outcomes[static_cast<std::size_t>(q)];
+      o.first_id += first_id;
+      write(sim, ctx, o, in_slot);
+    }
     ctx.log.make_room(outcomes.size(), ids);
     for (const Outcome& o : outcomes) book_fragments(sim, ctx, o);
     parallel_for_each(outcomes.size(), [&](std::size_t q) {

@@ -14,7 +14,9 @@ void ReachIndex::adopt(CellGrid small, CellGrid large, bool has_large, double r_
   r_extra_ = 0;
   slot_.resize(n);
   for (std::size_t s = 0; s < n; ++s) slot_[s] = static_cast<std::uint32_t>(s);
-  extra_.clear();
+  n_build_ = n;
+  extra_head_.clear();
+  extra_next_.clear();
   valid_ = true;
 }
 
@@ -37,8 +39,14 @@ void ReachIndex::remap(const std::vector<std::uint32_t>& to_new) {
 }
 
 void ReachIndex::insert(std::uint32_t slot, const Vec3& x, double r) {
+  if (extra_head_.empty()) {
+    const auto& d = small_.dims();
+    extra_head_.assign(static_cast<std::size_t>(d[0]) * d[1] * d[2], none);
+  }
   const auto c = small_.cell_of(x);
-  extra_[small_.index(c[0], c[1], c[2])].push_back(static_cast<std::uint32_t>(slot_.size()));
+  std::uint32_t& head = extra_head_[small_.index(c[0], c[1], c[2])];
+  extra_next_.push_back(head);
+  head = static_cast<std::uint32_t>(slot_.size());
   slot_.push_back(slot);
   r_extra_ = std::max(r_extra_, r);
 }

@@ -2,12 +2,12 @@
 // Spatial index of the particles' reach spheres at the last neighbour-list build (position and
 // radius then), kept between builds so that particles appended in place (breakage fragments) find
 // every partner the list must hold without a rebuild. Entries 0..n-1 are the slots at the build,
-// binned in the build's two cell grids (small and large particles); appended spheres go to a
-// sparse overflow grid on the small grid's cells. remap() follows the slots through compaction.
+// binned in the build's two cell grids (small and large particles); appended spheres go to an
+// overflow grid on the small grid's cells (a list per cell, its head array made at the first
+// append, so a run without appends holds none). remap() follows the slots through compaction.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "comminute/core/vec3.hpp"
@@ -42,20 +42,21 @@ class ReachIndex {
     const auto c = small_.cell_of(x);
     small_.visit_around(c, cells(small_, r_small_), visit);
     if (has_large_) large_.visit_around(large_.cell_of(x), cells(large_, r_large_), visit);
-    if (extra_.empty()) return;
+    if (extra_next_.empty()) return;
     small_.visit_cells_around(c, cells(small_, r_extra_), [&](std::size_t cell) {
-      const auto it = extra_.find(cell);
-      if (it != extra_.end())
-        for (std::uint32_t e : it->second) visit(e);
+      for (std::uint32_t e = extra_head_[cell]; e != none; e = extra_next_[e - n_build_]) visit(e);
     });
   }
 
  private:
   CellGrid small_, large_;
   bool has_large_ = false, valid_ = false;
-  double r_small_ = 0, r_large_ = 0, r_extra_ = 0;                     // m, largest radius per part
-  std::vector<std::uint32_t> slot_;                                    // entry -> current slot
-  std::unordered_map<std::size_t, std::vector<std::uint32_t>> extra_;  // cell -> appended entries
+  double r_small_ = 0, r_large_ = 0, r_extra_ = 0;  // m, largest radius per part
+  std::vector<std::uint32_t> slot_;                 // entry -> current slot
+  // the appended entries (n_build_ on): per small cell the last one appended there, and per entry
+  // the one appended there before it (none: the first)
+  std::size_t n_build_ = 0;
+  std::vector<std::uint32_t> extra_head_, extra_next_;
 };
 
 }  // namespace comminute

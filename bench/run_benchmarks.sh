@@ -32,6 +32,10 @@ mkdir -p bench/logs
 # one sitting per run: the summary takes medians over every *_rN.log, so logs of an earlier sitting
 # must not stay beside this one's
 rm -f bench/logs/*_r[0-9]*.log bench/logs/*_r[0-9]*.log.time
+# the machine and its load at the start, for the summary's first line (ratios from different
+# processors are not comparable: bench/RESULTS.md, thirty-sixth stop)
+{ grep -m1 "model name" /proc/cpuinfo | sed 's/.*: //'; nproc; date -u +"%Y-%m-%d %H:%M UTC";
+  cut -d' ' -f1 /proc/loadavg; } > bench/logs/machine.txt
 data_of() {
   case $1 in
     settle20k) echo "$peers/data/settle_N20000.data" ;;

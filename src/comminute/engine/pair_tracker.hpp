@@ -30,7 +30,7 @@ struct NewFragment {
 struct SimulationOptions {
   double skin = 0;      // m, Verlet skin (0: 0.2 x mean diameter at the first build with particles)
   int sort_every = 20;  // re-sort particles by cell every this many list rebuilds (0: never)
-  // m, buffer of the pruned pair list the force loop visits (PrunedPairs); negative: a quarter of
+  // m, buffer of the pruned pair list the force loop visits (PrunedPairs); negative: a tenth of
   // the skin; 0, or not below the skin: no pruning (the force loop visits every listed pair)
   double prune_buffer = -1;
 };

@@ -5,20 +5,18 @@ import glob, os, re, statistics, sys
 from collections import defaultdict
 
 logdir = sys.argv[1]
-rows = defaultdict(list)  # (case, code, np) -> [(pps, contacts, rss_mb)]
-by_rep = defaultdict(dict)  # (case, code, np) -> {repetition: pps}
+rows = defaultdict(list)  # (case, code, np) -> [(pps, contacts, rss_mb, repetition)]
 for path in glob.glob(os.path.join(logdir, "*.log")):
     m = re.match(r"(comminute|liggghts|lammps)_(\w+?)_p(\d+)_r(\d+)\.log$", os.path.basename(path))
     if not m:
         continue
-    code, case, np_ = m.group(1), m.group(2), int(m.group(3))
+    code, case, np_, rep = m.group(1), m.group(2), int(m.group(3)), int(m.group(4))
     txt = open(path, errors="replace").read()
     if code == "comminute":
         mm = re.search(r"N=(\d+) .*particle_steps_per_s=([0-9.e+]+) contacts=(\d+).*peak_rss_MB=(\d+)", txt)
         if not mm:
             continue
-        rows[(case, code, np_)].append((float(mm.group(2)), int(mm.group(3)), float(mm.group(4))))
-        by_rep[(case, code, np_)][int(m.group(4))] = float(mm.group(2))
+        rows[(case, code, np_)].append((float(mm.group(2)), int(mm.group(3)), float(mm.group(4)), rep))
     else:
         loops = re.findall(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms", txt)
         if len(loops) < 2:
@@ -30,12 +28,16 @@ for path in glob.glob(os.path.join(logdir, "*.log")):
         if os.path.exists(path + ".time"):
             r = re.search(r"Maximum resident set size \(kbytes\): (\d+)", open(path + ".time").read())
             rss = int(r.group(1)) / 1024 if r else -1.0
-        rows[(case, code, np_)].append((int(n) * int(s) / float(t), contacts, rss))
-        by_rep[(case, code, np_)][int(m.group(4))] = int(n) * int(s) / float(t)
+        rows[(case, code, np_)].append((int(n) * int(s) / float(t), contacts, rss, rep))
 
 def med(key):
     v = rows.get(key)
     return statistics.median(x[0] for x in v) if v else None
+
+def per_rep(a, b):
+    """rate a / rate b repetition by repetition (a median of three can hide a spread across a floor)"""
+    ra, rb = ({x[3]: x[0] for x in rows.get(k, [])} for k in (a, b))
+    return ", ".join(f"{ra[k] / rb[k]:.2f}" for k in sorted(ra) if k in rb) or "–"
 
 machine = os.path.join(logdir, "machine.txt")
 if os.path.exists(machine):
@@ -60,10 +62,6 @@ for case in ("settle20k", "settle100k", "dense100k", "drum20k"):
     one, two = med((case, "comminute", 1)), med((case, "comminute", 2))
     if one and two:
         print(f"\ncomminute {case}: two threads / one thread = {two / one:.2f}")
-    # the same ratios repetition by repetition (a median of three can hide a spread across a floor)
-    def per_rep(a, b):
-        ra, rb = by_rep.get(a, {}), by_rep.get(b, {})
-        return ", ".join(f"{ra[k] / rb[k]:.2f}" for k in sorted(ra) if k in rb) or "–"
     if one:
         print(f"comminute {case} by repetition: one thread / LIGGGHTS {per_rep((case, 'comminute', 1), (case, 'liggghts', 1))}; "
               f"/ LAMMPS {per_rep((case, 'comminute', 1), (case, 'lammps', 1))}; "
